@@ -1,0 +1,56 @@
+#include <algorithm>
+#include <chrono>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "netsph/app/commands.hpp"
+#include "netsph/app/scene_report.hpp"
+#include "netsph/solver/run_outputs.hpp"
+#include "netsph/solver/simulation.hpp"
+
+namespace netsph::app {
+
+int check_command(const CheckArgs& args) {
+  const CaseSpec spec = load_case(args.case_choice);
+  const int threads = apply_threads(args.threads);
+  spdlog::info("case '{}' from {}: valid", spec.simulation.name, spec.source);
+  Simulation sim(spec);
+  log_scene(sim);
+
+  // A short timing sample: the first step also sizes every work array, so memory is known.
+  const auto t0 = std::chrono::steady_clock::now();
+  sim.step();
+  const double dt0 = sim.last_dt();
+  const auto lim = sim.diagnostics().dt_limits;
+  int n = 1;
+  double wall = 0;
+  while (n < std::max(args.sample_steps, 2)) {
+    sim.step();
+    ++n;
+    wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (wall > 20) break;  // enough to estimate
+  }
+  wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double per_step = wall / n;
+  const double mean_dt = sim.time() / n;
+  const double n_total = spec.simulation.end_time / mean_dt;
+  const double np = static_cast<double>(sim.particles().size());
+
+  spdlog::info("memory: {:.0f} bytes/particle, {:.1f} MiB in all", sim.bytes_per_particle(),
+               sim.bytes_per_particle() * np / (1024.0 * 1024.0));
+  spdlog::info("initial dt = {:.3g} s (CFL {:g}; force limit {:.3g} s, acoustic-viscous limit {:.3g} s)",
+               dt0, spec.simulation.cfl, lim.force, lim.acoustic);
+  spdlog::info("timing sample: {} steps in {:.2f} s on {} threads = {:.3g} particle-steps/s", n, wall,
+               threads, np * n / wall);
+  spdlog::info("estimate for end_time = {:g} s: about {:.3g} steps, {} (dt varies as the flow "
+               "develops: take this as an order of magnitude)",
+               spec.simulation.end_time, n_total,
+               fmt::format("{:.0f} min {:02.0f} s", std::floor(n_total * per_step / 60),
+                           std::fmod(n_total * per_step, 60.0)));
+  spdlog::info("outputs: a snapshot every {:g} s, a series row every {:g} s",
+               snapshot_interval(spec), series_interval(spec));
+  return 0;
+}
+
+}  // namespace netsph::app

@@ -1,0 +1,59 @@
+#include <csignal>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "netsph/app/commands.hpp"
+#include "netsph/app/logging.hpp"
+#include "netsph/app/scene_report.hpp"
+#include "netsph/solver/runner.hpp"
+
+namespace netsph::app {
+namespace {
+extern "C" void on_interrupt(int) { request_stop(); }
+}  // namespace
+
+int run_command(const RunArgs& args) {
+  const CaseSpec spec = load_case(args.case_choice);
+  const std::string backend = resolve_backend(args.backend);
+  const int threads = apply_threads(args.threads);
+  const std::filesystem::path out =
+      args.out_dir.empty() ? std::filesystem::path("out") / spec.simulation.name
+                           : std::filesystem::path(args.out_dir);
+  log_also_to_file(out / "log.txt");
+
+  spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name, spec.source);
+  spdlog::info("backend {}, {} OpenMP threads, output folder {}", backend, threads,
+               std::filesystem::absolute(out).string());
+  Simulation sim(spec);
+  log_scene(sim);
+
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  RunOptions opt;
+  opt.out_dir = out;
+  opt.progress = !args.quiet;
+  opt.plain_progress = args.plain_progress;
+  opt.max_steps = args.max_steps;
+  const RunReport r = run_simulation(sim, opt);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+
+  for (const auto& w : r.warnings) spdlog::warn("{}", w);
+  spdlog::info("{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
+               r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
+  spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json", r.snapshots,
+               std::filesystem::absolute(out).string());
+  if (r.status == "unstable") {
+    spdlog::error("the simulation became unstable: {}", r.message);
+    spdlog::error("the outputs written up to that point, and a final snapshot, are in {}", out.string());
+    return 3;
+  }
+  if (r.status == "interrupted") {
+    spdlog::warn("{}", r.message);
+    return 130;
+  }
+  return 0;
+}
+
+}  // namespace netsph::app

@@ -1,0 +1,53 @@
+#pragma once
+// The netsph subcommands. Each returns the process exit code; errors are thrown as
+// netsph::Error and printed by main().
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "netsph/case/case_spec.hpp"
+
+namespace netsph::app {
+
+/// Where the case comes from: a path, "builtin:<name>", or empty for the default case.
+struct CaseChoice {
+  std::string path;
+  std::vector<std::string> overrides;  ///< --set key=value
+};
+
+CaseSpec load_case(const CaseChoice& choice);
+
+struct RunArgs {
+  CaseChoice case_choice;
+  std::string out_dir;      ///< empty: out/<case name>
+  std::string backend = "auto";
+  int threads = 0;          ///< 0: OpenMP default
+  std::int64_t max_steps = 0;
+  bool plain_progress = false;
+  bool quiet = false;
+};
+int run_command(const RunArgs& args);
+
+struct CheckArgs {
+  CaseChoice case_choice;
+  int threads = 0;
+  int sample_steps = 20;
+};
+int check_command(const CheckArgs& args);
+
+struct BenchArgs {
+  std::vector<double> sizes{1e5, 2.4e5, 1e6};  ///< target particle counts
+  int steps = 10;
+  int threads = 0;
+  std::string backend = "auto";
+  std::string json_path;
+};
+int bench_command(const BenchArgs& args);
+
+/// Applies --threads (0 keeps the OpenMP default) and returns the thread count in use.
+int apply_threads(int threads);
+
+/// Checks --backend; returns the backend that will run ("cpu" until the CUDA backend lands).
+std::string resolve_backend(const std::string& requested);
+
+}  // namespace netsph::app

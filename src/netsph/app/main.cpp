@@ -1,0 +1,106 @@
+// netsph command line: run, check, bench, cases. Errors become one line on stderr and a
+// non-zero exit code: 1 for bad input, 3 for an unstable run, 130 for an interrupted one.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "netsph/app/commands.hpp"
+#include "netsph/app/logging.hpp"
+#include "netsph/case/builtin_cases.hpp"
+#include "netsph/core/error.hpp"
+
+namespace {
+
+void add_case_options(CLI::App* cmd, netsph::app::CaseChoice& c) {
+  cmd->add_option("case", c.path,
+                  "case file (TOML), or builtin:<name>; default: the built-in default case");
+  cmd->add_option("--set", c.overrides,
+                  "override a case key, e.g. --set simulation.dp=0.01 (repeatable; value in TOML "
+                  "syntax)");
+}
+
+std::vector<double> parse_sizes(const std::string& text) {
+  std::vector<double> sizes;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    try {
+      std::size_t used = 0;
+      sizes.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw netsph::Error("--sizes", "'" + item + "' is not a number; expected e.g. 1e5,2.4e5,1e6");
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return sizes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace netsph::app;
+  CLI::App app{"netsph: SPH for fluid flow through flexible aquaculture nets"};
+  app.set_version_flag("--version", std::string("netsph ") + NETSPH_VERSION);
+  app.require_subcommand(0, 1);
+  app.fallthrough();
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet, "only warnings and errors");
+
+  RunArgs run;
+  auto* run_cmd = app.add_subcommand("run", "run a case (the built-in default case without a file)");
+  add_case_options(run_cmd, run.case_choice);
+  run_cmd->add_option("-o,--output", run.out_dir, "output folder (default: out/<case name>)");
+  run_cmd->add_option("--backend", run.backend, "auto, cpu or cuda")->capture_default_str();
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: all cores)")->capture_default_str();
+  run_cmd->add_option("--max-steps", run.max_steps, "stop after this many steps (0: no limit)");
+  run_cmd->add_flag("--plain-progress", run.plain_progress, "progress as periodic lines, not a bar");
+
+  CheckArgs check;
+  auto* check_cmd = app.add_subcommand(
+      "check", "validate a case; print particle counts, memory, initial dt and a run-time estimate");
+  add_case_options(check_cmd, check.case_choice);
+  check_cmd->add_option("--threads", check.threads, "OpenMP threads (0: all cores)");
+  check_cmd->add_option("--sample-steps", check.sample_steps, "steps timed for the estimate")
+      ->capture_default_str();
+
+  BenchArgs bench;
+  std::string sizes = "1e5,2.4e5,1e6";
+  auto* bench_cmd = app.add_subcommand(
+      "bench", "benchmark the 3D dam break: particle-steps per second and bytes per particle");
+  bench_cmd->add_option("--sizes", sizes, "comma-separated particle counts")->capture_default_str();
+  bench_cmd->add_option("--steps", bench.steps, "timed steps per size")->capture_default_str();
+  bench_cmd->add_option("--threads", bench.threads, "OpenMP threads (0: all cores)");
+  bench_cmd->add_option("--backend", bench.backend, "auto, cpu or cuda")->capture_default_str();
+  bench_cmd->add_option("--json", bench.json_path, "also write the results to this JSON file");
+
+  auto* cases_cmd = app.add_subcommand("cases", "list the built-in cases");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  log_to_console(quiet);
+  run.quiet = quiet;
+  try {
+    if (*cases_cmd) {
+      for (const auto& c : netsph::builtin_cases()) fmt::print("builtin:{}\n", c.name);
+      return 0;
+    }
+    if (*check_cmd) return check_command(check);
+    if (*bench_cmd) {
+      bench.sizes = parse_sizes(sizes);
+      return bench_command(bench);
+    }
+    return run_command(run);  // `netsph` alone runs the default case too
+  } catch (const netsph::Error& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    spdlog::error("internal error: {}", e.what());
+    return 2;
+  }
+}

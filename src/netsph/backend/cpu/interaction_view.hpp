@@ -1,0 +1,26 @@
+#pragma once
+// The particle data the interaction loop reads, as float arrays (structure of arrays) so the
+// inner loop over neighbours loads contiguous floats and vectorises. Positions are stored
+// relative to the grid origin: float keeps ~1e-7 of the domain size, far below dp for the
+// domain/dp ratios netsph targets (1e3-1e4), while the integration itself stays in double.
+// Pressure is evaluated once per particle here instead of once per pair.
+#include <cstdint>
+#include <vector>
+
+#include "netsph/core/real.hpp"
+#include "netsph/sph/fluid_model.hpp"
+#include "netsph/sph/particle_set.hpp"
+
+namespace netsph {
+
+struct InteractionView {
+  std::vector<Real> x, y, z;
+  std::vector<Real> vx, vy, vz;
+  std::vector<Real> rho, press;
+  std::vector<Real> fluid;  ///< 1 for fluid particles, 0 for boundary particles
+
+  void build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin);
+  std::size_t bytes() const { return 9 * x.capacity() * sizeof(Real); }
+};
+
+}  // namespace netsph

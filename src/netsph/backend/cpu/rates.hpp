@@ -1,0 +1,25 @@
+#pragma once
+// One interaction pass on the CPU: for every particle, the sums over its neighbours that give
+// dv/dt and drho/dt (sph/pair_interaction.hpp), gathered per particle so that no two threads
+// write the same memory and results do not depend on the thread count.
+#include <span>
+#include <vector>
+
+#include "netsph/backend/cpu/interaction_view.hpp"
+#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/sph/fluid_model.hpp"
+#include "netsph/sph/particle_set.hpp"
+
+namespace netsph {
+
+struct RateReductions {
+  double max_acc = 0;      ///< max |dv/dt| over fluid particles (gravity included), m/s^2
+  double max_visc_dt = 0;  ///< max |h v_ab.r_ab/(r^2+eta^2)|, 1/s
+};
+
+/// Fills acc (fluid particles: with gravity; boundary particles: zero) and drho.
+RateReductions compute_rates(const FluidModel& m, const CellGrid& grid, const InteractionView& v,
+                             std::span<const ParticleKind> kind, std::vector<Vec3f>& acc,
+                             std::vector<Real>& drho);
+
+}  // namespace netsph

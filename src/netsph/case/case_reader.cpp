@@ -1,0 +1,559 @@
+// The case-file schema: the only place that maps TOML keys to CaseSpec fields. Each table is
+// read by a TomlTableReader that rejects unknown keys first, then reads and range-checks the
+// keys in a fixed order; cross-key rules (boxes, 2D, domain) come after the keys they use.
+// docs/case-reference.md documents every key; keep the two in step.
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "netsph/case/case_overrides.hpp"
+#include "netsph/case/case_reader.hpp"
+#include "netsph/case/toml_table_reader.hpp"
+#include "netsph/core/error.hpp"
+
+namespace netsph {
+namespace {
+
+// ---- schema: allowed keys per table, in the order the reference documents them ----------
+
+struct TableKeys {
+  std::string_view table;
+  std::vector<std::string_view> keys;
+};
+
+const std::vector<TableKeys>& schema() {
+  static const std::vector<TableKeys> tables = {
+      {"simulation",
+       {"name", "dimensions", "dp", "h_over_dp", "kernel", "end_time", "cfl", "dt_min", "dt_max"}},
+      {"fluid",
+       {"density", "sound_speed", "sound_speed_coef", "gamma", "gravity", "viscosity",
+        "density_diffusion"}},
+      {"domain", {"min", "max"}},
+      {"fill", {"min", "max", "velocity", "surface_z"}},
+      {"wall", {"name", "min", "max", "faces", "layers", "model"}},
+      {"output", {"snapshots", "snapshot_every", "series_every"}},
+  };
+  return tables;
+}
+
+const std::vector<std::string_view>& keys_of(std::string_view table) {
+  for (const auto& t : schema()) {
+    if (t.table == table) return t.keys;
+  }
+  static const std::vector<std::string_view> none;
+  return none;
+}
+
+/// "[fluid]" or "[[fill]]": how a top-level table is written.
+std::string header_of(std::string_view table) {
+  const bool is_array = table == "fill" || table == "wall";
+  return is_array ? fmt::format("[[{}]]", table) : fmt::format("[{}]", table);
+}
+
+/// For a key that is close to nothing in its own table: maybe it was put in the wrong one.
+std::string home_hint(std::string_view key) {
+  for (const auto& t : schema()) {
+    for (const std::string_view k : t.keys) {
+      if (k == key) return fmt::format("'{}' belongs in {}", key, header_of(t.table));
+    }
+  }
+  return {};
+}
+
+const std::vector<std::string_view> kViscosityKeys = {"model", "alpha", "kinematic_viscosity"};
+const std::vector<std::string_view> kDiffusionKeys = {"model", "delta"};
+
+constexpr std::array kKernels = {Choice<KernelType>{"wendland", KernelType::Wendland},
+                                 Choice<KernelType>{"cubic_spline", KernelType::CubicSpline}};
+constexpr std::array kViscosityModels = {
+    Choice<ViscosityModel>{"artificial", ViscosityModel::Artificial},
+    Choice<ViscosityModel>{"laminar", ViscosityModel::Laminar}};
+constexpr std::array kDiffusionModels = {
+    Choice<DensityDiffusion>{"none", DensityDiffusion::None},
+    Choice<DensityDiffusion>{"molteni", DensityDiffusion::Molteni},
+    Choice<DensityDiffusion>{"fourtakas", DensityDiffusion::Fourtakas}};
+constexpr std::array kWallModels = {Choice<WallModel>{"dbc", WallModel::Dbc}};
+constexpr std::array<std::string_view, 6> kFaceNames = {"xmin", "xmax", "ymin",
+                                                        "ymax", "zmin", "zmax"};
+
+constexpr std::string_view kPlaneReason = "2D runs in the x-z plane (z up)";
+
+// ---- the reader ---------------------------------------------------------------------------
+
+class CaseReader {
+ public:
+  CaseReader(const toml::table& root, const TomlSource& source) : root_(root), source_(source) {}
+
+  CaseSpec read(const std::string& default_name) {
+    spec_.source = source_.name();
+    check_top_level();
+    read_simulation(default_name);
+    read_fluid();
+    read_domain();
+    read_fills();
+    read_walls();
+    read_output();
+    return std::move(spec_);
+  }
+
+ private:
+  bool is_2d() const { return spec_.simulation.dimensions == 2; }
+  /// Axes that carry geometry: x, z in 2D; x, y, z in 3D.
+  std::vector<int> used_axes() const { return is_2d() ? std::vector{0, 2} : std::vector{0, 1, 2}; }
+
+  [[noreturn]] void fail_root(const std::string& message) const {
+    throw Error(source_.where(root_.source()), message);
+  }
+
+  void check_top_level() const;
+  const toml::table* find_table(std::string_view name) const;
+  std::vector<const toml::table*> find_array_of_tables(std::string_view name) const;
+
+  void read_simulation(const std::string& default_name);
+  void read_fluid();
+  void read_viscosity(const TomlTableReader& fluid);
+  void read_density_diffusion(const TomlTableReader& fluid);
+  void read_domain();
+  void read_fills();
+  FillSpec read_fill(const toml::table& table, int number) const;
+  void check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const;
+  void read_walls();
+  WallSpec read_wall(const toml::table& table, int number) const;
+  std::array<bool, 6> read_faces(const TomlTableReader& r) const;
+  void read_output();
+
+  BoxSpec read_box(const TomlTableReader& r, std::string_view what) const;
+  Vec3d read_position(const TomlTableReader& r, std::string_view key,
+                      std::string_view meaning) const;
+  Vec3d read_in_plane_vector(const TomlTableReader& r, std::string_view key, const NumberRule& rule,
+                             Vec3d fallback) const;
+
+  const toml::table& root_;
+  const TomlSource& source_;
+  CaseSpec spec_;
+};
+
+void CaseReader::check_top_level() const {
+  std::vector<std::string_view> allowed;
+  std::vector<std::string> headers;
+  for (const auto& t : schema()) {
+    allowed.push_back(t.table);
+    headers.push_back(header_of(t.table));
+  }
+  const auto [first, first_value] = first_unknown_key(root_, allowed);
+  if (!first) return;
+  const std::string_view name = first->str();
+  std::string what;
+  if (first_value->is_table()) {
+    what = fmt::format("unknown table [{}]", name);
+  } else if (first_value->is_array_of_tables()) {
+    what = fmt::format("unknown table [[{}]]", name);
+  } else {
+    what = fmt::format("unknown top-level key '{}'", name);
+  }
+  std::string suggestion = did_you_mean(name, allowed);
+  if (suggestion.empty()) {
+    const std::string home = home_hint(name);
+    if (!home.empty()) suggestion = " (" + home + ")";
+  }
+  throw Error(source_.where(key_region(*first, *first_value)),
+              fmt::format("{}{}; allowed tables: {}", what, suggestion,
+                          join(std::vector<std::string_view>(headers.begin(), headers.end()))));
+}
+
+const toml::table* CaseReader::find_table(std::string_view name) const {
+  const toml::node* node = root_.get(name);
+  if (!node) return nullptr;
+  if (const auto* table = node->as_table()) return table;
+  const std::string message =
+      node->is_array_of_tables()
+          ? fmt::format("[{}] must be a single table: write [{}], not [[{}]]", name, name, name)
+          : fmt::format("{} must be a table: write [{}] followed by its keys, not {}", name, name,
+                        type_name(*node));
+  throw Error(source_.where(node->source()), message);
+}
+
+std::vector<const toml::table*> CaseReader::find_array_of_tables(std::string_view name) const {
+  std::vector<const toml::table*> tables;
+  const toml::node* node = root_.get(name);
+  if (!node) return tables;
+  const auto* array = node->as_array();
+  if (!array || (!array->empty() && !array->is_array_of_tables())) {
+    throw Error(source_.where(node->source()),
+                fmt::format("{} must be an array of tables: write [[{}]] (double brackets) once "
+                            "per entry, not {}",
+                            name, name,
+                            node->is_table() ? "[" + std::string(name) + "]"
+                                             : std::string(type_name(*node))));
+  }
+  for (const toml::node& element : *array) tables.push_back(element.as_table());
+  return tables;
+}
+
+// ---- [simulation] -------------------------------------------------------------------------
+
+void CaseReader::read_simulation(const std::string& default_name) {
+  const toml::table* table = find_table("simulation");
+  if (!table) fail_root("missing required table [simulation] (it needs at least dp and end_time)");
+  TomlTableReader r(*table, "simulation", "[simulation]", keys_of("simulation"), source_,
+                    home_hint);
+  SimulationSpec& s = spec_.simulation;
+  s.name = r.string("name", default_name);
+  if (r.has("name") && s.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
+  s.dimensions = static_cast<int>(r.integer("dimensions", IntRule{2, 3}, 3));
+  s.dp = r.required_number("dp", NumberRule::positive("m"), "particle spacing, m, > 0");
+  s.h_over_dp = r.number("h_over_dp", NumberRule::closed(1, 3, ""), s.h_over_dp);
+  s.kernel = r.choice("kernel", kKernels, s.kernel);
+  s.end_time = r.required_number("end_time", NumberRule::positive("s"), "simulated time, s, > 0");
+  s.cfl = r.number("cfl", NumberRule::left_open(0, 1, ""), s.cfl);
+  s.dt_min = r.number("dt_min", NumberRule::non_negative("s"), s.dt_min);
+  s.dt_max = r.number("dt_max", NumberRule::non_negative("s"), s.dt_max);
+  if (s.dt_min > 0 && s.dt_max > 0 && s.dt_max <= s.dt_min) {
+    r.fail_value("dt_max", *r.find("dt_max"),
+                 fmt::format("must be > simulation.dt_min ({} s) when both are set",
+                             format_number(s.dt_min)));
+  }
+}
+
+// ---- [fluid] ------------------------------------------------------------------------------
+
+void CaseReader::read_fluid() {
+  const toml::table* table = find_table("fluid");
+  if (!table) return;  // every key has a default
+  TomlTableReader r(*table, "fluid", "[fluid]", keys_of("fluid"), source_, home_hint);
+  FluidSpec& f = spec_.fluid;
+  f.density = r.number("density", NumberRule::closed(1, 1e5, "kg/m^3"), f.density);
+  f.sound_speed = r.number("sound_speed", NumberRule::positive("m/s"), f.sound_speed);
+  f.sound_speed_coef =
+      r.number("sound_speed_coef", NumberRule::closed(1, 1000, ""), f.sound_speed_coef);
+  if (r.has("sound_speed") && r.has("sound_speed_coef")) {
+    r.fail_value("sound_speed_coef", *r.find("sound_speed_coef"),
+                 "cannot be combined with fluid.sound_speed: give c0 either directly "
+                 "(sound_speed, m/s) or as coef * sqrt(|g| H) (sound_speed_coef), not both");
+  }
+  f.gamma = r.number("gamma", NumberRule::closed(1, 10, ""), f.gamma);
+  f.gravity = read_in_plane_vector(r, "gravity", NumberRule::any("m/s^2"), f.gravity);
+  read_viscosity(r);
+  read_density_diffusion(r);
+}
+
+/// A parameter given for a model it does not belong to is an error rather than silently
+/// ignored: the user believes it has an effect.
+void reject_foreign_parameter(const TomlTableReader& r, std::string_view key,
+                              std::string_view model, std::string_view owners,
+                              std::string_view own_keys) {
+  if (const toml::node* node = r.find(key)) {
+    r.fail_value(key, *node,
+                 fmt::format("does not apply to model \"{}\" ({} is a parameter of {}); "
+                             "allowed with \"{}\": {}",
+                             model, key, owners, model, own_keys));
+  }
+}
+
+void CaseReader::read_viscosity(const TomlTableReader& fluid) {
+  const toml::node* node = fluid.find("viscosity");
+  if (!node) return;
+  FluidSpec& f = spec_.fluid;
+  if (node->is_string()) {  // bare model name: default parameters
+    f.viscosity = fluid.to_choice("viscosity", *node, kViscosityModels);
+    return;
+  }
+  const auto* table = node->as_table();
+  if (!table) {
+    fluid.fail_value("viscosity", *node,
+                     fmt::format("must be \"artificial\", \"laminar\" or a table such as "
+                                 "{{ model = \"laminar\", kinematic_viscosity = 1e-6 }}, not {}",
+                                 type_name(*node)));
+  }
+  TomlTableReader r(*table, "fluid.viscosity", "fluid.viscosity", kViscosityKeys, source_);
+  f.viscosity = r.choice("model", kViscosityModels, f.viscosity);
+  if (f.viscosity == ViscosityModel::Laminar) {
+    reject_foreign_parameter(r, "alpha", "laminar", "\"artificial\"", "model, kinematic_viscosity");
+    f.kinematic_viscosity = r.number("kinematic_viscosity", NumberRule::left_open(0, 1, "m^2/s"),
+                                     f.kinematic_viscosity);
+  } else {
+    reject_foreign_parameter(r, "kinematic_viscosity", "artificial", "\"laminar\"", "model, alpha");
+    f.alpha = r.number("alpha", NumberRule::closed(0, 1, ""), f.alpha);
+  }
+}
+
+void CaseReader::read_density_diffusion(const TomlTableReader& fluid) {
+  const toml::node* node = fluid.find("density_diffusion");
+  if (!node) return;
+  FluidSpec& f = spec_.fluid;
+  if (node->is_string()) {
+    f.density_diffusion = fluid.to_choice("density_diffusion", *node, kDiffusionModels);
+    return;
+  }
+  const auto* table = node->as_table();
+  if (!table) {
+    fluid.fail_value("density_diffusion", *node,
+                     fmt::format("must be \"none\", \"molteni\", \"fourtakas\" or a table such "
+                                 "as {{ model = \"molteni\", delta = 0.1 }}, not {}",
+                                 type_name(*node)));
+  }
+  TomlTableReader r(*table, "fluid.density_diffusion", "fluid.density_diffusion", kDiffusionKeys,
+                    source_);
+  f.density_diffusion = r.choice("model", kDiffusionModels, f.density_diffusion);
+  if (f.density_diffusion == DensityDiffusion::None) {
+    reject_foreign_parameter(r, "delta", "none", "\"molteni\" and \"fourtakas\"", "model");
+  } else {
+    f.delta = r.number("delta", NumberRule::closed(0, 1, ""), f.delta);
+  }
+}
+
+// ---- geometry helpers ---------------------------------------------------------------------
+
+Vec3d CaseReader::read_position(const TomlTableReader& r, std::string_view key,
+                                std::string_view meaning) const {
+  Vec3d p = r.required_vec3(key, NumberRule::any("m"), meaning);
+  if (is_2d()) p.y = 0;  // y is ignored in 2D: normalise so later stages need not care
+  return p;
+}
+
+/// A vector whose y must be 0 in 2D (gravity, velocity): a y component would be silently
+/// lost, so it is an error rather than ignored.
+Vec3d CaseReader::read_in_plane_vector(const TomlTableReader& r, std::string_view key,
+                                       const NumberRule& rule, Vec3d fallback) const {
+  const toml::node* node = r.find(key);
+  if (!node) return fallback;
+  const Vec3d v = r.to_vec3(key, *node, rule);
+  if (is_2d() && v.y != 0) {
+    r.fail_value(key, *node, fmt::format("y must be 0 because {}", kPlaneReason),
+                 node->as_array()->get(1));
+  }
+  return v;
+}
+
+BoxSpec CaseReader::read_box(const TomlTableReader& r, std::string_view what) const {
+  BoxSpec box;
+  box.min = read_position(r, "min", fmt::format("lower corner [x, y, z] of {}, m", what));
+  box.max = read_position(r, "max", fmt::format("upper corner [x, y, z] of {}, m", what));
+  for (const int axis : used_axes()) {
+    if (box.max[axis] > box.min[axis]) continue;
+    const char name = "xyz"[axis];
+    r.fail_value("max", *r.find("max"),
+                 fmt::format("must be > {} = {} on {} ({}: {} <= {})", r.key_path("min"),
+                             format_vec3(box.min), is_2d() ? "x and z" : "x, y and z", name,
+                             format_number(box.max[axis]), format_number(box.min[axis])));
+  }
+  return box;
+}
+
+// ---- [domain] -----------------------------------------------------------------------------
+
+void CaseReader::read_domain() {
+  const toml::table* table = find_table("domain");
+  if (!table) return;
+  TomlTableReader r(*table, "domain", "[domain]", keys_of("domain"), source_, home_hint);
+  const BoxSpec box = read_box(r, "the domain");
+  spec_.domain = {true, box.min, box.max};
+}
+
+// ---- [[fill]] -----------------------------------------------------------------------------
+
+void CaseReader::read_fills() {
+  const std::vector<const toml::table*> tables = find_array_of_tables("fill");
+  if (tables.empty()) {
+    fail_root("a case needs fluid: add at least one [[fill]] table with min and max corners");
+  }
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    spec_.fills.push_back(read_fill(*tables[i], static_cast<int>(i) + 1));
+  }
+}
+
+FillSpec CaseReader::read_fill(const toml::table& table, int number) const {
+  const std::string name = fmt::format("fill[{}]", number);
+  TomlTableReader r(table, name, name, keys_of("fill"), source_, home_hint);
+  FillSpec fill;
+  fill.where = r.location();
+  fill.box = read_box(r, "the fluid box");
+  fill.velocity = read_in_plane_vector(r, "velocity", NumberRule::any("m/s"), fill.velocity);
+  fill.surface_z = r.optional_number("surface_z", NumberRule::any("m"));
+  if (fill.surface_z && *fill.surface_z < fill.box.min.z) {
+    r.fail_value("surface_z", *r.find("surface_z"),
+                 fmt::format("must be >= the box's min z ({} m): the free surface cannot lie "
+                             "below the fluid",
+                             format_number(fill.box.min.z)));
+  }
+  if (spec_.domain.given) check_fill_in_domain(r, fill.box);
+  return fill;
+}
+
+void CaseReader::check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const {
+  const DomainSpec& d = spec_.domain;
+  for (const int axis : used_axes()) {
+    const char name = "xyz"[axis];
+    std::string problem;
+    if (box.min[axis] < d.min[axis]) {
+      problem = fmt::format("its min {} = {} < domain min {} = {}", name,
+                            format_number(box.min[axis]), name, format_number(d.min[axis]));
+    } else if (box.max[axis] > d.max[axis]) {
+      problem = fmt::format("its max {} = {} > domain max {} = {}", name,
+                            format_number(box.max[axis]), name, format_number(d.max[axis]));
+    }
+    if (problem.empty()) continue;
+    r.fail_table(fmt::format("{} (min {}, max {}) is not inside [domain] (min {}, max {}): {}",
+                             r.title(), format_vec3(box.min), format_vec3(box.max),
+                             format_vec3(d.min), format_vec3(d.max), problem));
+  }
+}
+
+// ---- [[wall]] -----------------------------------------------------------------------------
+
+void CaseReader::read_walls() {
+  const std::vector<const toml::table*> tables = find_array_of_tables("wall");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    WallSpec wall = read_wall(*tables[i], static_cast<int>(i) + 1);
+    for (std::size_t j = 0; j < spec_.walls.size(); ++j) {
+      if (spec_.walls[j].name != wall.name) continue;
+      const std::string message = fmt::format(
+          "wall name \"{}\" is used twice: by wall[{}] ({}) and wall[{}]; names "
+          "must be unique",
+          wall.name, j + 1, spec_.walls[j].where.str(), i + 1);
+      const toml::node* name_node = tables[i]->get("name");
+      throw Error(source_.where(name_node ? name_node->source() : tables[i]->source()), message);
+    }
+    spec_.walls.push_back(std::move(wall));
+  }
+}
+
+WallSpec CaseReader::read_wall(const toml::table& table, int number) const {
+  const std::string name = fmt::format("wall[{}]", number);
+  TomlTableReader r(table, name, name, keys_of("wall"), source_, home_hint);
+  WallSpec wall;
+  wall.where = r.location();
+  wall.name = r.string("name", fmt::format("wall{}", number));
+  if (wall.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
+  wall.box = read_box(r, "the wall's fluid side");
+  wall.faces = read_faces(r);
+  wall.layers = static_cast<int>(r.integer("layers", IntRule{1, 10}, wall.layers));
+  wall.model = r.choice("model", kWallModels, wall.model);
+  return wall;
+}
+
+std::array<bool, 6> CaseReader::read_faces(const TomlTableReader& r) const {
+  std::array<bool, 6> faces{};
+  const std::vector<std::string_view> allowed =
+      is_2d() ? std::vector<std::string_view>{"xmin", "xmax", "zmin", "zmax"}
+              : std::vector<std::string_view>(kFaceNames.begin(), kFaceNames.end());
+  const toml::node* node = r.find("faces");
+  if (!node) {
+    for (const std::string_view face : allowed) {
+      faces[std::find(kFaceNames.begin(), kFaceNames.end(), face) - kFaceNames.begin()] = true;
+    }
+    return faces;
+  }
+  const auto* array = node->as_array();
+  const std::string example = "e.g. [\"xmin\", \"xmax\", \"zmin\"]";
+  if (!array) {
+    r.fail_value(
+        "faces", *node,
+        fmt::format("must be an array of face names ({}), not {}", example, type_name(*node)));
+  }
+  if (array->empty()) {
+    r.fail_value("faces", *node,
+                 fmt::format("must name at least one face; allowed: {}", join(allowed)));
+  }
+  for (const toml::node& element : *array) {
+    const auto* s = element.as_string();
+    if (!s) {
+      r.fail_value(
+          "faces", *node,
+          fmt::format("face names must be strings ({}), not {}", example, type_name(element)),
+          &element);
+    }
+    const std::string& face = s->get();
+    const auto it = std::find(kFaceNames.begin(), kFaceNames.end(), face);
+    if (it == kFaceNames.end()) {
+      r.fail_value("faces", *node,
+                   fmt::format("unknown face \"{}\"{}; allowed: {}", face,
+                               did_you_mean(face, allowed), join(allowed)),
+                   &element);
+    }
+    if (std::find(allowed.begin(), allowed.end(), face) == allowed.end()) {
+      r.fail_value("faces", *node,
+                   fmt::format("face \"{}\" is not allowed in 2D because {}; allowed: {}", face,
+                               kPlaneReason, join(allowed)),
+                   &element);
+    }
+    bool& flag = faces[static_cast<std::size_t>(it - kFaceNames.begin())];
+    if (flag) {
+      r.fail_value("faces", *node, fmt::format("face \"{}\" is listed twice", face), &element);
+    }
+    flag = true;
+  }
+  return faces;
+}
+
+// ---- [output] -----------------------------------------------------------------------------
+
+void CaseReader::read_output() {
+  const toml::table* table = find_table("output");
+  if (!table) return;
+  TomlTableReader r(*table, "output", "[output]", keys_of("output"), source_, home_hint);
+  OutputSpec& o = spec_.output;
+  o.snapshots = r.boolean("snapshots", o.snapshots);
+  o.snapshot_every = r.number("snapshot_every", NumberRule::non_negative("s"), o.snapshot_every);
+  if (o.snapshot_every > spec_.simulation.end_time) {
+    r.fail_value("snapshot_every", *r.find("snapshot_every"),
+                 fmt::format("must be <= simulation.end_time ({} s), or 0 for automatic",
+                             format_number(spec_.simulation.end_time)));
+  }
+  o.series_every = r.number("series_every", NumberRule::non_negative("s"), o.series_every);
+}
+
+// ---- entry points -------------------------------------------------------------------------
+
+toml::table parse_toml(std::string_view text, const std::string& source_name) {
+  try {
+    return toml::parse(text, std::string(source_name));
+  } catch (const toml::parse_error& e) {
+    const TomlSource source(source_name);
+    throw Error(source.where(e.source()), fmt::format("TOML syntax error: {}", e.description()));
+  }
+}
+
+CaseSpec read_case(std::string_view text, const std::string& source_name,
+                   const std::vector<std::string>& overrides, const std::string& default_name) {
+  toml::table root = parse_toml(text, source_name);
+  apply_overrides(root, overrides);
+  const TomlSource source(source_name);
+  return CaseReader(root, source).read(default_name);
+}
+
+std::string read_file_text(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw Error(path.string(), "cannot read case file: it is a directory");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw Error(path.string(), fmt::format("cannot read case file: {}", std::strerror(errno)));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    throw Error(path.string(), fmt::format("cannot read case file: {}", std::strerror(errno)));
+  }
+  return text.str();
+}
+
+}  // namespace
+
+CaseSpec read_case_file(const std::filesystem::path& path,
+                        const std::vector<std::string>& overrides) {
+  const std::string text = read_file_text(path);
+  return read_case(text, path.string(), overrides, path.stem().string());
+}
+
+CaseSpec read_case_string(std::string_view toml_text, const std::string& source_name,
+                          const std::vector<std::string>& overrides) {
+  return read_case(toml_text, source_name, overrides, source_name);
+}
+
+}  // namespace netsph

@@ -1,0 +1,23 @@
+#pragma once
+// Reads and validates a TOML case file into a CaseSpec. Every key is checked: a bad value,
+// a missing required key or an unknown key (a typo) throws netsph::Error naming the file,
+// line, column, key, the bad value and what is allowed.
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "netsph/case/case_spec.hpp"
+
+namespace netsph {
+
+/// `overrides` are "dotted.key=value" strings from `--set` (value in TOML syntax; a bare
+/// word is taken as a string). They replace or add keys before validation.
+CaseSpec read_case_file(const std::filesystem::path& path,
+                        const std::vector<std::string>& overrides = {});
+
+/// Same, from text; `source_name` is used in error messages (e.g. "builtin:default").
+CaseSpec read_case_string(std::string_view toml_text, const std::string& source_name,
+                          const std::vector<std::string>& overrides = {});
+
+}  // namespace netsph

@@ -1,0 +1,75 @@
+#include "netsph/geometry/box_lattice.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "netsph/core/error.hpp"
+
+namespace netsph {
+
+std::array<int, 3> lattice_counts(const LatticeBox& box, double dp) {
+  std::array<int, 3> n{1, 1, 1};
+  static const char* axis_name[] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    if (box.dims == 2 && a == 1) continue;
+    const double len = box.max[a] - box.min[a];
+    n[a] = static_cast<int>(std::lround(len / dp));
+    if (n[a] < 1) {
+      throw Error("geometry", std::string("box is thinner than dp on ") + axis_name[a] +
+                                  " (length " + std::to_string(len) + " m)");
+    }
+  }
+  return n;
+}
+
+Vec3d lattice_max(const LatticeBox& box, double dp) {
+  const auto n = lattice_counts(box, dp);
+  Vec3d m = box.min;
+  for (int a = 0; a < 3; ++a) {
+    if (box.dims == 2 && a == 1) continue;
+    m[a] += n[a] * dp;
+  }
+  return m;
+}
+
+namespace {
+double coord(const LatticeBox& box, int axis, int i, double dp) {
+  if (box.dims == 2 && axis == 1) return 0.0;
+  return box.min[axis] + (i + 0.5) * dp;
+}
+}  // namespace
+
+std::vector<Vec3d> fill_box(const LatticeBox& box, double dp) {
+  const auto n = lattice_counts(box, dp);
+  std::vector<Vec3d> pts;
+  pts.reserve(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
+        pts.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
+  return pts;
+}
+
+std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp, const std::array<bool, 6>& faces,
+                                   int layers) {
+  const auto n = lattice_counts(box, dp);
+  // Index range per axis: extend by `layers` on a side only if that face carries a wall.
+  std::array<int, 3> lo{}, hi{};
+  for (int a = 0; a < 3; ++a) {
+    const bool flat = box.dims == 2 && a == 1;
+    lo[a] = (!flat && faces[2 * a]) ? -layers : 0;
+    hi[a] = (!flat && faces[2 * a + 1]) ? n[a] + layers : n[a];
+  }
+  std::vector<Vec3d> pts;
+  for (int k = lo[2]; k < hi[2]; ++k)
+    for (int j = lo[1]; j < hi[1]; ++j)
+      for (int i = lo[0]; i < hi[0]; ++i) {
+        const int idx[3] = {i, j, k};
+        bool outside = false;
+        for (int a = 0; a < 3; ++a) outside = outside || idx[a] < 0 || idx[a] >= n[a];
+        if (outside) pts.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
+      }
+  return pts;
+}
+
+}  // namespace netsph

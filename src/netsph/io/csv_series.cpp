@@ -1,0 +1,100 @@
+#include "netsph/io/csv_series.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <string_view>
+
+#include "netsph/core/error.hpp"
+
+namespace netsph {
+namespace {
+
+// RFC 4180 quoting, only when a header cell needs it: plain names stay readable and
+// pandas / ParaView still split a name such as "force, x" correctly.
+std::string csv_cell(std::string_view text) {
+  if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+  return out;
+}
+
+std::string header_row(const std::vector<CsvColumn>& columns) {
+  std::string row;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i > 0) row += ',';
+    const CsvColumn& c = columns[i];
+    row += csv_cell(c.unit.empty() ? c.name : c.name + " [" + c.unit + "]");
+  }
+  row += '\n';
+  return row;
+}
+
+// Counts (steps, ids, particle numbers) are stored as doubles but read best as integers;
+// 2^53 is where doubles stop representing every integer, so larger values keep %.9g.
+void append_value(std::string& row, double v) {
+  // Spelled out because glibc prints "-nan" for some NaNs, and readers expect "nan".
+  if (std::isnan(v)) {
+    row += "nan";
+    return;
+  }
+  if (std::isinf(v)) {
+    row += v > 0 ? "inf" : "-inf";
+    return;
+  }
+  char buf[40];
+  int len;
+  if (std::fabs(v) < 9007199254740992.0 && v == std::floor(v)) {
+    len = std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v));
+  } else {
+    len = std::snprintf(buf, sizeof buf, "%.9g", v);
+  }
+  row.append(buf, static_cast<std::size_t>(len));
+}
+
+}  // namespace
+
+CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns)
+    : file_(std::move(file)), columns_(std::move(columns)) {
+  fp_ = std::fopen(file_.c_str(), "w");
+  if (fp_ == nullptr) {
+    throw Error(file_.string(), std::string("cannot create the CSV file: ") + std::strerror(errno));
+  }
+  const std::string header = header_row(columns_);
+  if (std::fwrite(header.data(), 1, header.size(), fp_) != header.size() || std::fflush(fp_) != 0) {
+    const int err = errno;
+    std::fclose(fp_);
+    fp_ = nullptr;
+    throw Error(file_.string(), std::string("cannot write the CSV header: ") + std::strerror(err));
+  }
+}
+
+CsvSeries::~CsvSeries() {
+  if (fp_ != nullptr) std::fclose(fp_);
+}
+
+void CsvSeries::append(std::span<const double> values) {
+  if (values.size() != columns_.size()) {
+    throw Error(file_.string(), "a CSV row has " + std::to_string(values.size()) +
+                                    " values but the file has " + std::to_string(columns_.size()) +
+                                    " columns");
+  }
+  // One fwrite + fflush per row: the row reaches the OS whole, so a run that dies (or a
+  // reader that tails the file) never sees a partial row.
+  std::string row;
+  row.reserve(values.size() * 16);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) row += ',';
+    append_value(row, values[i]);
+  }
+  row += '\n';
+  if (std::fwrite(row.data(), 1, row.size(), fp_) != row.size() || std::fflush(fp_) != 0) {
+    throw Error(file_.string(), std::string("cannot write a CSV row: ") + std::strerror(errno));
+  }
+}
+
+}  // namespace netsph

@@ -1,0 +1,37 @@
+#pragma once
+// A time series written as CSV: a header row "name [unit],..." and one row per append().
+// Each row is flushed at once so that a run that dies keeps every row written before.
+#include <cstdio>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace netsph {
+
+struct CsvColumn {
+  std::string name;  ///< e.g. "time"
+  std::string unit;  ///< e.g. "s"; empty for dimensionless counts -> header "step"
+};
+
+class CsvSeries {
+ public:
+  /// Creates (truncates) the file and writes the header. Throws netsph::Error on failure.
+  CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns);
+  ~CsvSeries();
+  CsvSeries(const CsvSeries&) = delete;
+  CsvSeries& operator=(const CsvSeries&) = delete;
+
+  /// One row; values.size() must equal the column count (netsph::Error otherwise).
+  /// Integers are printed without a decimal point, others with 9 significant digits.
+  void append(std::span<const double> values);
+
+  const std::filesystem::path& path() const { return file_; }
+
+ private:
+  std::filesystem::path file_;
+  std::vector<CsvColumn> columns_;
+  std::FILE* fp_ = nullptr;
+};
+
+}  // namespace netsph

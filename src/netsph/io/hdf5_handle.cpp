@@ -1,0 +1,32 @@
+#include "netsph/io/hdf5_handle.hpp"
+
+namespace netsph::h5 {
+namespace {
+
+// H5E_WALK_UPWARD visits the most specific error first (n == 0): the low-level cause,
+// which is what a user can act on ("No such file or directory"), not "unable to create file".
+herr_t keep_innermost(unsigned n, const H5E_error2_t* err, void* data) {
+  if (n == 0 && err != nullptr && err->desc != nullptr) {
+    *static_cast<std::string*>(data) = err->desc;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::string last_error_message() {
+  std::string message;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, keep_innermost, &message);
+  // The file driver's message repeats the path and adds open() flags around the OS error;
+  // the caller names the path already, so only "error message = '...'" is worth keeping.
+  const std::string key = "error message = '";
+  if (const auto start = message.find(key); start != std::string::npos) {
+    const auto begin = start + key.size();
+    if (const auto end = message.find('\'', begin); end != std::string::npos) {
+      return message.substr(begin, end - begin);
+    }
+  }
+  return message;
+}
+
+}  // namespace netsph::h5

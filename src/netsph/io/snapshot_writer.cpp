@@ -1,0 +1,288 @@
+#include "netsph/io/snapshot_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <numeric>
+#include <system_error>
+#include <type_traits>
+
+#include "netsph/core/error.hpp"
+#include "netsph/io/atomic_file.hpp"
+#include "netsph/io/hdf5_handle.hpp"
+
+namespace netsph {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The vector fields are written straight from the caller's memory as N x 3 datasets.
+static_assert(std::is_standard_layout_v<Vec3d> && sizeof(Vec3d) == 3 * sizeof(double));
+static_assert(std::is_standard_layout_v<Vec3f> && sizeof(Vec3f) == 3 * sizeof(float));
+
+// One dataset of a snapshot file, described once for both the HDF5 writer and the XDMF
+// text, so that the declared types and shapes cannot drift from what is on disk.
+struct FieldSpec {
+  const char* name;         // dataset name at the file root, and XDMF attribute name
+  const char* number_type;  // XDMF NumberType
+  int precision;            // XDMF Precision (bytes)
+  int components;           // 1 (N) or 3 (N x 3)
+  const char* role;         // "Topology", "Geometry", or an XDMF AttributeType
+};
+
+constexpr std::array<FieldSpec, 7> kFields = {{
+    {"connectivity", "Int", 8, 1, "Topology"},
+    {"position", "Float", 8, 3, "Geometry"},
+    {"velocity", "Float", 4, 3, "Vector"},
+    {"density", "Float", 4, 1, "Scalar"},
+    {"pressure", "Float", 4, 1, "Scalar"},
+    {"kind", "UChar", 1, 1, "Scalar"},
+    {"id", "UInt", 4, 1, "Scalar"},
+}};
+
+// HDF5 types for a FieldSpec: little-endian in the file (what every reader expects), native
+// in memory (identical on x86 and ARM, so HDF5 writes the caller's bytes without converting).
+hid_t file_type(const FieldSpec& f) {
+  const std::string_view t = f.number_type;
+  if (t == "Float") return f.precision == 8 ? H5T_IEEE_F64LE : H5T_IEEE_F32LE;
+  if (t == "Int") return H5T_STD_I64LE;
+  if (t == "UChar") return H5T_STD_U8LE;
+  return H5T_STD_U32LE;  // "UInt"
+}
+
+hid_t memory_type(const FieldSpec& f) {
+  const std::string_view t = f.number_type;
+  if (t == "Float") return f.precision == 8 ? H5T_NATIVE_DOUBLE : H5T_NATIVE_FLOAT;
+  if (t == "Int") return H5T_NATIVE_INT64;
+  if (t == "UChar") return H5T_NATIVE_UINT8;
+  return H5T_NATIVE_UINT32;  // "UInt"
+}
+
+// Throws netsph::Error naming the file, with HDF5's most specific cause appended.
+[[noreturn]] void fail(const fs::path& path, const std::string& what) {
+  const std::string cause = h5::last_error_message();
+  throw Error(path.string(), cause.empty() ? what : what + ": " + cause);
+}
+
+hid_t check_id(hid_t id, const fs::path& path, const std::string& what) {
+  if (id < 0) fail(path, what);
+  return id;
+}
+
+void check_status(herr_t status, const fs::path& path, const std::string& what) {
+  if (status < 0) fail(path, what);
+}
+
+// Plain contiguous layout (no chunking, no compression: snapshots are written often and
+// must be fast), and no fill value: every byte is written by H5Dwrite right after.
+h5::Handle contiguous_layout(const fs::path& path) {
+  h5::Handle dcpl(check_id(H5Pcreate(H5P_DATASET_CREATE), path, "H5Pcreate failed"), H5Pclose);
+  check_status(H5Pset_layout(dcpl.get(), H5D_CONTIGUOUS), path, "H5Pset_layout failed");
+  check_status(H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER), path, "H5Pset_fill_time failed");
+  return dcpl;
+}
+
+void write_dataset(hid_t file, hid_t dcpl, const FieldSpec& f, std::size_t n, const void* data,
+                   const fs::path& path) {
+  const std::string what = std::string("cannot write dataset /") + f.name;
+  const std::array<hsize_t, 2> dims = {n, static_cast<hsize_t>(f.components)};
+  h5::Handle space(
+      check_id(H5Screate_simple(f.components == 1 ? 1 : 2, dims.data(), nullptr), path, what),
+      H5Sclose);
+  h5::Handle dset(
+      check_id(H5Dcreate2(file, f.name, file_type(f), space.get(), H5P_DEFAULT, dcpl, H5P_DEFAULT),
+               path, what),
+      H5Dclose);
+  // An empty span may have a null data(), which H5Dwrite rejects; an empty dataset is
+  // complete once created.
+  if (n > 0) {
+    check_status(H5Dwrite(dset.get(), memory_type(f), H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
+                 what);
+  }
+  check_status(dset.close(), path, what);
+}
+
+void write_scalar_attribute(hid_t file, const char* name, hid_t ftype, hid_t mtype,
+                            const void* value, const fs::path& path) {
+  const std::string what = std::string("cannot write attribute ") + name;
+  h5::Handle space(check_id(H5Screate(H5S_SCALAR), path, what), H5Sclose);
+  h5::Handle attr(
+      check_id(H5Acreate2(file, name, ftype, space.get(), H5P_DEFAULT, H5P_DEFAULT), path, what),
+      H5Aclose);
+  check_status(H5Awrite(attr.get(), mtype, value), path, what);
+  check_status(attr.close(), path, what);
+}
+
+std::size_t particle_count(const SnapshotFields& s, const fs::path& dir) {
+  const std::size_t n = s.position.size();
+  if (s.velocity.size() != n || s.density.size() != n || s.pressure.size() != n ||
+      s.kind.size() != n || s.id.size() != n) {
+    throw Error(dir.string(),
+                fmt::format("snapshot fields differ in length: position {}, velocity {}, "
+                            "density {}, pressure {}, kind {}, id {}",
+                            n, s.velocity.size(), s.density.size(), s.pressure.size(),
+                            s.kind.size(), s.id.size()));
+  }
+  return n;
+}
+
+// Writes the datasets and attributes of one snapshot into the open `file`.
+void fill_h5(hid_t file, const fs::path& path, const SnapshotFields& s, std::size_t n) {
+  // ParaView needs explicit Polyvertex connectivity (see the header); it is the one field
+  // that is not in the caller's memory already.
+  std::vector<std::int64_t> connectivity(n);
+  std::iota(connectivity.begin(), connectivity.end(), std::int64_t{0});
+  const std::array<const void*, kFields.size()> data = {
+      connectivity.data(), s.position.data(), s.velocity.data(), s.density.data(),
+      s.pressure.data(),   s.kind.data(),     s.id.data()};
+
+  const h5::Handle dcpl = contiguous_layout(path);
+  for (std::size_t i = 0; i < kFields.size(); ++i) {
+    write_dataset(file, dcpl.get(), kFields[i], n, data[i], path);
+  }
+  write_scalar_attribute(file, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &s.time, path);
+  write_scalar_attribute(file, "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &s.step, path);
+}
+
+// Writes one complete snapshot file, or throws and leaves no file behind.
+void write_h5(const fs::path& path, const SnapshotFields& s, std::size_t n) {
+  h5::Handle file(check_id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), path,
+                           "cannot create the HDF5 file"),
+                  H5Fclose);
+  // From here on the file is ours: a half-written one would only mislead whoever opens the
+  // folder later, so it is removed on failure. (Before H5Fcreate succeeded, whatever is
+  // at `path` is someone else's and stays.)
+  try {
+    fill_h5(file.get(), path, s, n);
+    // Closing flushes the file: a full disk shows up here, so the status is checked.
+    check_status(file.close(), path, "cannot close the HDF5 file");
+  } catch (...) {
+    file.close();
+    std::error_code ignored;
+    fs::remove(path, ignored);
+    throw;
+  }
+}
+
+// The base name becomes part of file names and of "file.h5:/dataset" references in the
+// XDMF, where a '/' or ':' would change the meaning.
+void check_base_name(const std::string& base, const fs::path& dir) {
+  if (base.empty() || base.find_first_of("/\\:") != std::string::npos ||
+      base.find('\0') != std::string::npos) {
+    throw Error(dir.string(),
+                "invalid snapshot base name '" + base + "' (must be non-empty, without / \\ :)");
+  }
+}
+
+std::string xml_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// One <DataItem> pointing at dataset `f` of `h5` (a path relative to the .xdmf file).
+void append_data_item(fmt::memory_buffer& out, const FieldSpec& f, std::size_t n,
+                      std::string_view h5, int indent) {
+  const std::string dims =
+      f.components == 1 ? fmt::format("{}", n) : fmt::format("{} {}", n, f.components);
+  fmt::format_to(std::back_inserter(out),
+                 "{:{}}<DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" "
+                 "Format=\"HDF\">{}:/{}</DataItem>\n",
+                 "", indent, dims, f.number_type, f.precision, h5, f.name);
+}
+
+}  // namespace
+
+SnapshotWriter::SnapshotWriter(std::filesystem::path dir, std::string base)
+    : dir_(std::move(dir)), base_(std::move(base)) {
+  check_base_name(base_, dir_);
+  const fs::path snapshots = dir_ / "snapshots";
+  std::error_code ec;
+  fs::create_directories(snapshots, ec);
+  if (ec) throw Error(snapshots.string(), "cannot create the folder: " + ec.message());
+}
+
+std::filesystem::path SnapshotWriter::xdmf_path() const {
+  return dir_ / (base_ + ".xdmf");
+}
+
+std::filesystem::path SnapshotWriter::write(const SnapshotFields& fields) {
+  const std::size_t n = particle_count(fields, dir_);
+  const std::string relative = fmt::format("snapshots/{}_{:06d}.h5", base_, entries_.size());
+  const fs::path path = dir_ / relative;
+  {
+    const h5::SilenceErrors silence;
+    write_h5(path, fields, n);
+  }
+  // The snapshot is complete on disk, so it is listed even if the XDMF rewrite below fails:
+  // the next successful rewrite then includes it.
+  entries_.push_back({relative, fields.time, fields.step, n});
+  rewrite_xdmf();
+  return path;
+}
+
+void SnapshotWriter::rewrite_xdmf() const {
+  fmt::memory_buffer out;
+  auto it = std::back_inserter(out);
+  fmt::format_to(it,
+                 "<?xml version=\"1.0\" ?>\n"
+                 "<Xdmf Version=\"3.0\">\n"
+                 " <Domain>\n"
+                 "  <Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
+                 xml_escape(base_));
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const Entry& e = entries_[i];
+    const std::string h5 = xml_escape(e.h5_relative);
+    // Named after the snapshot index (unique even if a step number repeats); "{}" prints
+    // the shortest text that reads back as the same double.
+    fmt::format_to(it,
+                   "   <Grid Name=\"snapshot_{:06d}\" GridType=\"Uniform\">\n"
+                   "    <Time Value=\"{}\"/>\n",
+                   i, e.time);
+    for (const FieldSpec& f : kFields) {
+      const std::string_view role = f.role;
+      if (role == "Topology") {
+        fmt::format_to(it,
+                       "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" "
+                       "NodesPerElement=\"1\">\n",
+                       e.n);
+      } else if (role == "Geometry") {
+        fmt::format_to(it, "    <Geometry GeometryType=\"XYZ\">\n");
+      } else {
+        fmt::format_to(it, "    <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n",
+                       f.name, f.role);
+      }
+      append_data_item(out, f, e.n, h5, 5);
+      const char* close = role == "Topology"   ? "Topology"
+                          : role == "Geometry" ? "Geometry"
+                                               : "Attribute";
+      fmt::format_to(it, "    </{}>\n", close);
+    }
+    fmt::format_to(it, "   </Grid>\n");
+  }
+  fmt::format_to(it,
+                 "  </Grid>\n"
+                 " </Domain>\n"
+                 "</Xdmf>\n");
+  write_file_atomic(xdmf_path(), std::string_view(out.data(), out.size()));
+}
+
+}  // namespace netsph

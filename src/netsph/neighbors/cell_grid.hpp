@@ -1,0 +1,73 @@
+#pragma once
+// Uniform cell grid for the neighbour search. Particles are sorted by cell (x fastest), so
+// the candidates of a particle are a few contiguous index ranges: for every (dy, dz) offset,
+// the run of cells ix-R..ix+R is one range. Cells are support/2 (plus a skin) wide and R = 2:
+// about 60% fewer candidates than cells of the full support with R = 1, for the same cost of
+// ranges, because contiguous x-runs keep the range count at (2R+1)^(dims-1).
+//
+// The skin lets one sort serve both symplectic stages: a pair that is within the support at
+// the half step was within support + 2*max_displacement when the grid was built, and the
+// search covers R * cell_size >= support * (1 + skin). The solver checks the displacement and
+// rebuilds when it exceeds the skin (docs/ARCHITECTURE.md, "Neighbour search").
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "netsph/core/vec3.hpp"
+
+namespace netsph {
+
+/// A contiguous range of sorted particle indices [begin, end).
+struct IndexRange {
+  std::uint32_t begin;
+  std::uint32_t end;
+};
+
+class CellGrid {
+ public:
+  static constexpr int kSearchCells = 2;  ///< R: cells searched on each side
+
+  /// Lays the grid over the box [lo, hi] (the domain). `support` is the kernel radius;
+  /// `skin` the relative margin (cell = support (1 + skin) / R). dims = 2 uses one y cell.
+  void configure(const Vec3d& lo, const Vec3d& hi, double support, double skin, int dims);
+
+  /// Cell index of a position, or -1 outside the grid.
+  std::int64_t cell_of(const Vec3d& p) const;
+
+  /// Counting sort by cell. Fills `order` (sorted slot -> old index; particles outside the
+  /// grid are left out) and the cell ranges. Deterministic and stable for any thread count.
+  void sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& order);
+
+  /// Largest displacement allowed since the last sort before a rebuild is needed, m.
+  double max_displacement() const { return max_displacement_; }
+
+  /// The candidate ranges of cell `c`, at most (2R+1)^2 in 3D; returns how many were written.
+  int neighbour_ranges(std::int64_t c, std::array<IndexRange, 25>& out) const;
+
+  std::int64_t cell_count() const { return static_cast<std::int64_t>(n_[0]) * n_[1] * n_[2]; }
+  IndexRange cell_range(std::int64_t c) const { return {begin_[c], begin_[c + 1]}; }
+  const std::array<int, 3>& dims() const { return n_; }
+  double cell_size() const { return cell_; }
+  const Vec3d& origin() const { return origin_; }
+  std::size_t bytes() const {
+    return begin_.capacity() * sizeof(std::uint32_t) + scratch_.capacity_bytes();
+  }
+
+ private:
+  struct CellScratch {
+    std::vector<std::int64_t> cell_of_particle;
+    std::size_t capacity_bytes() const { return cell_of_particle.capacity() * sizeof(std::int64_t); }
+  };
+
+  Vec3d origin_{};
+  double cell_ = 1;
+  double inv_cell_ = 1;
+  double max_displacement_ = 0;
+  std::array<int, 3> n_{1, 1, 1};
+  int dims_ = 3;
+  std::vector<std::uint32_t> begin_;  // size cell_count() + 1
+  CellScratch scratch_;
+};
+
+}  // namespace netsph

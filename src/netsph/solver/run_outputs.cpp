@@ -1,0 +1,130 @@
+#include "netsph/solver/run_outputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace netsph {
+
+double snapshot_interval(const CaseSpec& spec) {
+  return spec.output.snapshot_every > 0 ? spec.output.snapshot_every : spec.simulation.end_time / 50;
+}
+
+double series_interval(const CaseSpec& spec) {
+  return spec.output.series_every > 0 ? spec.output.series_every : snapshot_interval(spec) / 10;
+}
+
+GlobalMeasures measure(const Simulation& sim) {
+  const ParticleSet& p = sim.particles();
+  const double mass = sim.model().mass;
+  GlobalMeasures g;
+  double ke = 0, vmax2 = 0, rmin = std::numeric_limits<double>::infinity(), rmax = -rmin;
+  std::size_t nf = 0;
+  const auto n = static_cast<std::int64_t>(p.size());
+#pragma omp parallel for reduction(+ : ke, nf) reduction(max : vmax2, rmax) reduction(min : rmin)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!is_fluid(p.kind[i])) continue;
+    const double v2 = norm2(Vec3d(p.vel[i]));
+    ke += 0.5 * mass * v2;
+    vmax2 = std::max(vmax2, v2);
+    rmin = std::min(rmin, static_cast<double>(p.rho[i]));
+    rmax = std::max(rmax, static_cast<double>(p.rho[i]));
+    ++nf;
+  }
+  g.fluid = nf;
+  g.boundary = p.size() - nf;
+  g.kinetic_energy = ke;
+  g.fluid_mass = mass * static_cast<double>(nf);
+  g.max_speed = std::sqrt(vmax2);
+  g.min_density = nf ? rmin : 0;
+  g.max_density = nf ? rmax : 0;
+  return g;
+}
+
+namespace {
+std::vector<CsvColumn> series_columns(int dims) {
+  const std::string per = dims == 2 ? "/m" : "";
+  return {{"time", "s"},
+          {"dt", "s"},
+          {"step", ""},
+          {"fluid_particles", ""},
+          {"boundary_particles", ""},
+          {"lost_particles", ""},
+          {"kinetic_energy", "J" + per},
+          {"fluid_mass", "kg" + per},
+          {"max_speed", "m/s"},
+          {"min_density", "kg/m^3"},
+          {"max_density", "kg/m^3"},
+          {"dt_force_limit", "s"},
+          {"dt_acoustic_limit", "s"},
+          {"wall_time", "s"}};
+}
+}  // namespace
+
+RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots)
+    : dir_(std::move(dir)),
+      series_((std::filesystem::create_directories(dir_), dir_ / "series.csv"),
+              series_columns(sim.model().dims)) {
+  if (snapshots) snapshots_ = std::make_unique<SnapshotWriter>(dir_, "particles");
+  snapshot_every_ = snapshot_interval(sim.spec());
+  series_every_ = series_interval(sim.spec());
+  next_snapshot_ = sim.time();
+  next_series_ = sim.time();
+}
+
+void RunOutputs::write_snapshot(const Simulation& sim) {
+  const ParticleSet& p = sim.particles();
+  const std::vector<float> press = sim.pressures();
+  SnapshotFields f;
+  f.time = sim.time();
+  f.step = sim.steps();
+  f.position = p.pos;
+  f.velocity = p.vel;
+  f.density = p.rho;
+  f.pressure = press;
+  f.kind = {reinterpret_cast<const std::uint8_t*>(p.kind.data()), p.kind.size()};
+  f.id = p.id;
+  snapshots_->write(f);
+  last_snapshot_step_ = sim.steps();
+}
+
+void RunOutputs::write_series_row(const Simulation& sim, double wall_s) {
+  const GlobalMeasures g = measure(sim);
+  const auto& d = sim.diagnostics();
+  const double row[] = {sim.time(),
+                        sim.steps() > 0 ? sim.last_dt() : 0.0,
+                        static_cast<double>(sim.steps()),
+                        static_cast<double>(g.fluid),
+                        static_cast<double>(g.boundary),
+                        static_cast<double>(d.lost_total),
+                        g.kinetic_energy,
+                        g.fluid_mass,
+                        g.max_speed,
+                        g.min_density,
+                        g.max_density,
+                        d.dt_limits.force,
+                        d.dt_limits.acoustic,
+                        wall_s};
+  series_.append(row);
+  last_series_step_ = sim.steps();
+}
+
+void RunOutputs::maybe_write(const Simulation& sim, double wall_s) {
+  // A small tolerance so that round-off in the accumulated time does not skip an output.
+  const double t = sim.time() * (1 + 1e-12);
+  if (snapshots_ && t >= next_snapshot_) {
+    write_snapshot(sim);
+    while (next_snapshot_ <= t) next_snapshot_ += snapshot_every_;
+  }
+  if (t >= next_series_) {
+    write_series_row(sim, wall_s);
+    while (next_series_ <= t) next_series_ += series_every_;
+  }
+}
+
+void RunOutputs::write_final(const Simulation& sim, double wall_s) {
+  if (snapshots_ && last_snapshot_step_ != sim.steps()) write_snapshot(sim);
+  if (last_series_step_ != sim.steps()) write_series_row(sim, wall_s);
+}
+
+}  // namespace netsph

@@ -1,0 +1,56 @@
+#pragma once
+// The files a run writes into its output folder:
+//   particles.xdmf + snapshots/*.h5   fluid and boundary particles (ParaView)
+//   series.csv                        global quantities over time, one row per series interval
+//   summary.json                      the run as a whole (rewritten atomically, also on failure)
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "netsph/io/csv_series.hpp"
+#include "netsph/io/snapshot_writer.hpp"
+#include "netsph/solver/simulation.hpp"
+
+namespace netsph {
+
+/// Global quantities of the current state (double sums, fluid particles only unless noted).
+struct GlobalMeasures {
+  std::size_t fluid = 0, boundary = 0;
+  double kinetic_energy = 0;  ///< J (J/m in 2D)
+  double fluid_mass = 0;      ///< kg (kg/m in 2D)
+  double max_speed = 0;       ///< m/s
+  double min_density = 0, max_density = 0;  ///< kg/m^3
+};
+
+GlobalMeasures measure(const Simulation& sim);
+
+class RunOutputs {
+ public:
+  RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots);
+
+  /// Writes a snapshot and/or a series row when their interval has come (always at t = 0).
+  void maybe_write(const Simulation& sim, double wall_s);
+  /// Writes the final snapshot and series row unless this exact step was written already.
+  void write_final(const Simulation& sim, double wall_s);
+
+  int snapshots_written() const { return snapshots_ ? snapshots_->count() : 0; }
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  void write_snapshot(const Simulation& sim);
+  void write_series_row(const Simulation& sim, double wall_s);
+
+  std::filesystem::path dir_;
+  std::unique_ptr<SnapshotWriter> snapshots_;
+  CsvSeries series_;
+  double snapshot_every_ = 0, series_every_ = 0;
+  double next_snapshot_ = 0, next_series_ = 0;
+  std::int64_t last_snapshot_step_ = -1, last_series_step_ = -1;
+};
+
+/// Intervals after defaults: snapshot_every 0 -> end_time / 50; series_every 0 -> snapshot / 10.
+double snapshot_interval(const CaseSpec& spec);
+double series_interval(const CaseSpec& spec);
+
+}  // namespace netsph

@@ -1,0 +1,129 @@
+#include "netsph/solver/runner.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "netsph/io/atomic_file.hpp"
+#include "netsph/io/progress.hpp"
+#include "netsph/solver/run_outputs.hpp"
+
+namespace netsph {
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+const char* kernel_name(KernelType k) { return k == KernelType::Wendland ? "wendland" : "cubic_spline"; }
+const char* diffusion_name(DensityDiffusion d) {
+  switch (d) {
+    case DensityDiffusion::None: return "none";
+    case DensityDiffusion::Molteni: return "molteni";
+    case DensityDiffusion::Fourtakas: return "fourtakas";
+  }
+  return "?";
+}
+
+std::vector<std::string> collect_warnings(const Simulation& sim) {
+  std::vector<std::string> w = sim.scene().warnings;
+  const auto& d = sim.diagnostics();
+  if (d.lost_total > 0) {
+    w.push_back(fmt::format("{} particles left the domain and were removed", d.lost_total));
+  }
+  return w;
+}
+
+nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const RunOptions& opt) {
+  const CaseSpec& s = sim.spec();
+  const GlobalMeasures g = measure(sim);
+  nlohmann::json j;
+  j["netsph_version"] = NETSPH_VERSION;
+  j["case"] = {{"name", s.simulation.name}, {"source", s.source}};
+  j["status"] = r.status;
+  if (!r.message.empty()) j["message"] = r.message;
+  j["model"] = {{"dimensions", s.simulation.dimensions},
+                {"dp_m", s.simulation.dp},
+                {"h_m", sim.model().kernel.h},
+                {"kernel", kernel_name(s.simulation.kernel)},
+                {"sound_speed_m_s", sim.scene().sound_speed},
+                {"density_diffusion", diffusion_name(s.fluid.density_diffusion)},
+                {"viscosity", s.fluid.viscosity == ViscosityModel::Laminar ? "laminar" : "artificial"}};
+  j["particles"] = {{"fluid", g.fluid}, {"boundary", g.boundary},
+                    {"lost", sim.diagnostics().lost_total}};
+  j["time"] = {{"simulated_s", r.sim_time}, {"end_time_s", s.simulation.end_time},
+               {"steps", r.steps}, {"last_dt_s", sim.last_dt()}};
+  j["performance"] = {{"wall_s", r.wall_s},
+                      {"particle_steps_per_s", r.particle_steps_per_s},
+                      {"bytes_per_particle", r.bytes_per_particle},
+                      {"threads", omp_get_max_threads()}};
+  j["final_state"] = {{"kinetic_energy_J", g.kinetic_energy}, {"fluid_mass_kg", g.fluid_mass},
+                      {"max_speed_m_s", g.max_speed}, {"min_density", g.min_density},
+                      {"max_density", g.max_density}};
+  j["outputs"] = {{"folder", std::filesystem::absolute(opt.out_dir).string()},
+                  {"snapshots", r.snapshots},
+                  {"xdmf", r.snapshots > 0 ? "particles.xdmf" : ""},
+                  {"series", "series.csv"}};
+  j["warnings"] = r.warnings;
+  return j;
+}
+
+}  // namespace
+
+void request_stop() { g_stop.store(true); }
+bool stop_requested() { return g_stop.load(); }
+
+RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
+  const CaseSpec& spec = sim.spec();
+  const double end = spec.simulation.end_time;
+  RunOutputs outputs(sim, opt.out_dir, spec.output.snapshots);
+  ProgressReporter progress(end, stderr, opt.plain_progress);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  RunReport r;
+  double particle_steps = 0;
+  outputs.maybe_write(sim, 0.0);
+  try {
+    while (sim.time() < end * (1 - 1e-12)) {
+      if (opt.max_steps > 0 && sim.steps() >= opt.max_steps) {
+        r.status = "step limit";
+        break;
+      }
+      if (stop_requested()) {
+        r.status = "interrupted";
+        r.message = fmt::format("stopped by the user at t = {:.6g} s (step {})", sim.time(), sim.steps());
+        break;
+      }
+      particle_steps += static_cast<double>(sim.particles().size());
+      sim.step();
+      outputs.maybe_write(sim, wall());
+      if (opt.progress) progress.update(sim.time(), sim.steps(), sim.particles().size());
+    }
+    if (r.status.empty()) r.status = "completed";
+  } catch (const SimulationUnstable& e) {
+    r.status = "unstable";
+    r.message = e.what();
+  }
+  if (opt.progress) progress.finish(sim.time(), sim.steps(), sim.particles().size());
+
+  r.wall_s = wall();
+  r.steps = sim.steps();
+  r.sim_time = sim.time();
+  r.particle_steps_per_s = r.wall_s > 0 ? particle_steps / r.wall_s : 0;
+  r.bytes_per_particle = sim.bytes_per_particle();
+  r.warnings = collect_warnings(sim);
+  try {
+    outputs.write_final(sim, r.wall_s);
+  } catch (const Error& e) {
+    r.warnings.push_back(std::string("final output failed: ") + e.what());
+  }
+  r.snapshots = outputs.snapshots_written();
+  write_file_atomic(opt.out_dir / "summary.json", summary_json(sim, r, opt).dump(2) + "\n");
+  return r;
+}
+
+}  // namespace netsph

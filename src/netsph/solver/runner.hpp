@@ -1,0 +1,41 @@
+#pragma once
+// Runs a Simulation to its end time with outputs and progress, and turns every way a run can
+// end (completed, unstable, interrupted by Ctrl-C) into a written summary.json and a report.
+// Whatever happens, the snapshots and series rows written so far stay, and a last snapshot of
+// the final state is added.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "netsph/solver/simulation.hpp"
+
+namespace netsph {
+
+struct RunOptions {
+  std::filesystem::path out_dir = "out";
+  bool progress = true;          ///< show progress on stderr
+  bool plain_progress = false;   ///< periodic lines even on a terminal
+  std::int64_t max_steps = 0;    ///< stop after this many steps (0: run to end_time)
+};
+
+struct RunReport {
+  std::string status;            ///< "completed", "unstable", "interrupted", "step limit"
+  std::string message;           ///< diagnosis when not completed
+  std::int64_t steps = 0;
+  double sim_time = 0;           ///< s
+  double wall_s = 0;
+  double particle_steps_per_s = 0;
+  double bytes_per_particle = 0;
+  int snapshots = 0;
+  std::vector<std::string> warnings;
+  bool ok() const { return status == "completed" || status == "step limit"; }
+};
+
+RunReport run_simulation(Simulation& sim, const RunOptions& options);
+
+/// Async-signal-safe: asks a running simulation to stop after the current step.
+void request_stop();
+bool stop_requested();
+
+}  // namespace netsph

@@ -1,0 +1,169 @@
+#include "netsph/solver/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "netsph/core/error.hpp"
+#include "netsph/geometry/box_lattice.hpp"
+#include "netsph/neighbors/cell_grid.hpp"
+
+namespace netsph {
+namespace {
+
+LatticeBox lattice_box(const BoxSpec& b, int dims) { return {b.min, b.max, dims}; }
+
+/// Free-surface height of a fill: given, or the top of its particle lattice.
+double surface_of(const FillSpec& f, double dp, int dims) {
+  return f.surface_z ? *f.surface_z : lattice_max(lattice_box(f.box, dims), dp).z;
+}
+
+/// Hydrostatic density at height z below a surface (Tait inverted), rho0 above it.
+Real hydrostatic_density(const TaitEos& eos, double gz, double surface, double z) {
+  const double p = -static_cast<double>(eos.rho0) * gz * (surface - z);
+  return static_cast<Real>(p > 0 ? eos.density(p) : static_cast<double>(eos.rho0));
+}
+
+double sound_speed_of(const CaseSpec& spec, double depth) {
+  if (spec.fluid.sound_speed > 0) return spec.fluid.sound_speed;
+  const double g = norm(spec.fluid.gravity);
+  if (!(g > 0) || !(depth > 0)) {
+    throw Error(spec.source, "fluid.sound_speed_coef needs gravity and a fluid depth to set c0 = "
+                             "coef * sqrt(|g| H); give fluid.sound_speed (m/s) instead");
+  }
+  return spec.fluid.sound_speed_coef * std::sqrt(g * depth);
+}
+
+/// Drops fluid particles closer than dp/2 to any particle created before them (walls first,
+/// then earlier fills): overlapping boxes must not double the mass.
+std::size_t remove_overlaps(ParticleSet& p, double dp, const Vec3d& lo, const Vec3d& hi, int dims) {
+  CellGrid grid;
+  grid.configure(lo, hi, dp, 0.0, dims);
+  std::vector<std::uint32_t> order;
+  grid.sort(p.pos, order);
+  std::vector<char> keep(p.size(), 1);
+  const double tol2 = 0.25 * dp * dp;
+  std::array<IndexRange, 25> ranges;
+  for (std::int64_t c = 0; c < grid.cell_count(); ++c) {
+    const IndexRange own = grid.cell_range(c);
+    if (own.begin == own.end) continue;
+    const int nr = grid.neighbour_ranges(c, ranges);
+    for (std::uint32_t s = own.begin; s < own.end; ++s) {
+      const std::uint32_t a = order[s];
+      if (!is_fluid(p.kind[a])) continue;
+      for (int k = 0; k < nr; ++k)
+        for (std::uint32_t t = ranges[k].begin; t < ranges[k].end; ++t) {
+          const std::uint32_t b = order[t];
+          if (b < a && keep[b] && norm2(p.pos[a] - p.pos[b]) < tol2) keep[a] = 0;
+        }
+    }
+  }
+  const auto removed = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 0));
+  if (removed == 0) return 0;
+  ParticleSet q;
+  q.reserve(p.size() - removed);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (keep[i]) q.add(p.pos[i], p.vel[i], p.rho[i], p.kind[i]);
+  p = std::move(q);
+  return removed;
+}
+
+}  // namespace
+
+FluidModel fluid_model_for(const CaseSpec& spec, double sound_speed) {
+  FluidModelInput in;
+  in.dims = spec.simulation.dimensions;
+  in.dp = spec.simulation.dp;
+  in.h_over_dp = spec.simulation.h_over_dp;
+  in.kernel = spec.simulation.kernel;
+  in.rho0 = spec.fluid.density;
+  in.c0 = sound_speed;
+  in.gamma = spec.fluid.gamma;
+  in.gravity = spec.fluid.gravity;
+  in.viscosity = spec.fluid.viscosity;
+  in.alpha = spec.fluid.alpha;
+  in.nu = spec.fluid.kinematic_viscosity;
+  in.diffusion = spec.fluid.density_diffusion;
+  in.delta = spec.fluid.delta;
+  return make_fluid_model(in);
+}
+
+Scene build_scene(const CaseSpec& spec) {
+  Scene scene;
+  const int dims = spec.simulation.dimensions;
+  const double dp = spec.simulation.dp;
+
+  double top_surface = -std::numeric_limits<double>::infinity();
+  for (const auto& f : spec.fills) {
+    const double s = surface_of(f, dp, dims);
+    top_surface = std::max(top_surface, s);
+    scene.fluid_depth = std::max(scene.fluid_depth, s - f.box.min.z);
+  }
+  scene.sound_speed = sound_speed_of(spec, scene.fluid_depth);
+  scene.model = fluid_model_for(spec, scene.sound_speed);
+  const TaitEos& eos = scene.model.eos;
+  const double gz = spec.fluid.gravity.z;
+
+  ParticleSet& p = scene.particles;
+  for (const auto& w : spec.walls) {
+    const auto pts = wall_box_layers(lattice_box(w.box, dims), dp, w.faces, w.layers);
+    for (const auto& x : pts) {
+      // Walls start hydrostatic with the highest free surface so that DBC does not need a
+      // transient to build the pressure that holds the fluid up.
+      p.add(x, {}, hydrostatic_density(eos, gz, top_surface, x.z), ParticleKind::Wall);
+    }
+    scene.sources.push_back({w.name, pts.size()});
+  }
+  for (std::size_t i = 0; i < spec.fills.size(); ++i) {
+    const auto& f = spec.fills[i];
+    const auto pts = fill_box(lattice_box(f.box, dims), dp);
+    const double surface = surface_of(f, dp, dims);
+    for (const auto& x : pts)
+      p.add(x, Vec3f(f.velocity), hydrostatic_density(eos, gz, surface, x.z), ParticleKind::Fluid);
+    scene.sources.push_back({fmt::format("fill{}", i + 1), pts.size()});
+  }
+  if (p.size() == 0) throw Error(spec.source, "the case creates no particles");
+
+  // Bounding box of the particles, for the default domain and the overlap search.
+  Vec3d lo = p.pos[0], hi = p.pos[0];
+  for (const auto& x : p.pos)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
+
+  const double h = spec.simulation.h_over_dp * dp;
+  if (spec.domain.given) {
+    scene.domain_min = spec.domain.min;
+    scene.domain_max = spec.domain.max;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec3d& x = p.pos[i];
+      const bool inside = x.x >= scene.domain_min.x && x.x < scene.domain_max.x &&
+                          x.z >= scene.domain_min.z && x.z < scene.domain_max.z &&
+                          (dims == 2 || (x.y >= scene.domain_min.y && x.y < scene.domain_max.y));
+      if (!inside) {
+        throw Error(spec.source, fmt::format("a {} particle at ({:.4g}, {:.4g}, {:.4g}) m lies outside "
+                                             "[domain]; enlarge the domain or move the {}",
+                                             is_fluid(p.kind[i]) ? "fluid" : "wall", x.x, x.y, x.z,
+                                             is_fluid(p.kind[i]) ? "fill" : "wall"));
+      }
+    }
+  } else {
+    // Default: the particles' bounding box plus 2h around it, and as much again above it so
+    // that splashes are not cut off.
+    scene.domain_min = lo - Vec3d(2 * h, 2 * h, 2 * h);
+    scene.domain_max = hi + Vec3d(2 * h, 2 * h, 2 * h);
+    scene.domain_max.z += hi.z - lo.z;
+    if (dims == 2) scene.domain_min.y = scene.domain_max.y = 0;
+  }
+
+  Vec3d glo = lo - Vec3d(dp, dp, dp), ghi = hi + Vec3d(dp, dp, dp);
+  scene.removed_overlaps = remove_overlaps(p, dp, glo, ghi, dims);
+  if (scene.removed_overlaps > 0) {
+    scene.warnings.push_back(fmt::format(
+        "{} fluid particles overlapped walls or earlier fills (closer than dp/2) and were removed",
+        scene.removed_overlaps));
+  }
+  return scene;
+}
+
+}  // namespace netsph

@@ -1,0 +1,36 @@
+#pragma once
+// Scene: the initial particles of a case and the quantities derived from the case as a whole
+// (sound speed, domain, fluid model). Built once from a validated CaseSpec.
+#include <string>
+#include <vector>
+
+#include "netsph/case/case_spec.hpp"
+#include "netsph/sph/fluid_model.hpp"
+#include "netsph/sph/particle_set.hpp"
+
+namespace netsph {
+
+struct SceneSource {
+  std::string name;        ///< "fill1", or the wall's name
+  std::size_t particles = 0;
+};
+
+struct Scene {
+  ParticleSet particles;
+  FluidModel model;
+  double sound_speed = 0;     ///< c0, m/s
+  double fluid_depth = 0;     ///< deepest fill, m (used for c0 = coef sqrt(g H))
+  Vec3d domain_min{}, domain_max{};
+  std::vector<SceneSource> sources;
+  std::size_t removed_overlaps = 0;  ///< fluid particles dropped for sitting on another particle
+  std::vector<std::string> warnings;
+};
+
+/// Builds the particles (walls first, then fills in file order) with hydrostatic density.
+/// Throws netsph::Error naming the case item when something cannot be built.
+Scene build_scene(const CaseSpec& spec);
+
+/// The fluid model of a case for a given sound speed.
+FluidModel fluid_model_for(const CaseSpec& spec, double sound_speed);
+
+}  // namespace netsph

@@ -1,0 +1,350 @@
+// Case reader: every malformed file under tests/cases/bad must fail with the message (and
+// line) its "# expect:" header names; the valid files under tests/cases/good must parse to
+// the expected values, defaults included; --set overrides and their errors.
+#include "netsph/case/case_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "netsph/core/error.hpp"
+
+namespace netsph {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// tests/cases. NETSPH_TEST_CASES_DIR should name it; when it does not exist (the macro is
+/// built from the CMake folder the test is registered in), use the folder beside this file's.
+fs::path cases_dir() {
+  const fs::path configured = NETSPH_TEST_CASES_DIR;
+  std::error_code ec;
+  if (fs::is_directory(configured / "bad", ec)) return configured;
+  return fs::path(__FILE__).parent_path().parent_path() / "cases";
+}
+
+const fs::path kCasesDir = cases_dir();
+
+// ---- malformed files ----------------------------------------------------------------------
+
+struct BadCase {
+  std::string expect;  ///< substring of what()
+  int line = 0;        ///< expected line of where(); 0: not checked
+};
+
+/// Reads the "# expect: ..." and "# expect-line: N" header comments of a bad case file.
+BadCase read_expectations(const fs::path& path) {
+  BadCase c;
+  std::ifstream in(path);
+  std::string line;
+  const std::string expect_tag = "# expect: ";
+  const std::string line_tag = "# expect-line: ";
+  while (std::getline(in, line) && line.starts_with("#")) {
+    if (line.starts_with(expect_tag)) c.expect = line.substr(expect_tag.size());
+    if (line.starts_with(line_tag)) c.line = std::stoi(line.substr(line_tag.size()));
+  }
+  return c;
+}
+
+std::vector<fs::path> bad_case_files() {
+  std::vector<fs::path> files;
+  std::error_code ec;  // a missing folder must not abort test discovery: the count test fails
+  for (const auto& entry : fs::directory_iterator(kCasesDir / "bad", ec)) {
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class BadCaseFile : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(BadCaseFile, FailsWithExpectedMessageAndPosition) {
+  const fs::path& path = GetParam();
+  const BadCase expected = read_expectations(path);
+  ASSERT_FALSE(expected.expect.empty()) << path << " has no '# expect:' header line";
+  try {
+    read_case_file(path);
+    FAIL() << path << " was accepted; expected an error containing: " << expected.expect;
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(expected.expect), std::string::npos)
+        << "what():   " << e.what() << "\nexpected: " << expected.expect;
+    const std::string file = path.string();
+    EXPECT_TRUE(e.where().starts_with(file)) << "where() does not name the file: " << e.where();
+    if (expected.line > 0) {
+      const std::string position = file + ":" + std::to_string(expected.line) + ":";
+      EXPECT_TRUE(e.where().starts_with(position))
+          << "where(): " << e.where() << "\nexpected line " << expected.line;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CaseReader, BadCaseFile, ::testing::ValuesIn(bad_case_files()),
+                         [](const ::testing::TestParamInfo<fs::path>& param_info) {
+                           return param_info.param.stem().string();
+                         });
+
+TEST(CaseReaderBadCases, FolderHoldsEnoughCases) {
+  EXPECT_GE(bad_case_files().size(), 24u);
+}
+
+// ---- valid files --------------------------------------------------------------------------
+
+constexpr double kEps = 1e-12;
+
+TEST(CaseReader, FullFileParsesEveryKey) {
+  const fs::path path = kCasesDir / "good" / "full3d.toml";
+  const CaseSpec spec = read_case_file(path);
+  EXPECT_EQ(spec.source, path.string());
+
+  const SimulationSpec& s = spec.simulation;
+  EXPECT_EQ(s.name, "tank3d");
+  EXPECT_EQ(s.dimensions, 3);
+  EXPECT_DOUBLE_EQ(s.dp, 0.02);
+  EXPECT_DOUBLE_EQ(s.h_over_dp, 2.0);
+  EXPECT_EQ(s.kernel, KernelType::CubicSpline);
+  EXPECT_DOUBLE_EQ(s.end_time, 1.5);
+  EXPECT_DOUBLE_EQ(s.cfl, 0.25);
+  EXPECT_DOUBLE_EQ(s.dt_min, 1e-7);
+  EXPECT_DOUBLE_EQ(s.dt_max, 1e-3);
+
+  const FluidSpec& f = spec.fluid;
+  EXPECT_DOUBLE_EQ(f.density, 998.0);  // written as an integer
+  EXPECT_DOUBLE_EQ(f.sound_speed, 35.0);
+  EXPECT_DOUBLE_EQ(f.sound_speed_coef, 20.0);
+  EXPECT_DOUBLE_EQ(f.gamma, 7.0);
+  EXPECT_EQ(f.gravity, (Vec3d{0, 0, -9.81}));
+  EXPECT_EQ(f.viscosity, ViscosityModel::Laminar);
+  EXPECT_DOUBLE_EQ(f.kinematic_viscosity, 1e-6);
+  EXPECT_DOUBLE_EQ(f.alpha, 0.01);  // default, unused by laminar
+  EXPECT_EQ(f.density_diffusion, DensityDiffusion::Fourtakas);
+  EXPECT_DOUBLE_EQ(f.delta, 0.2);
+
+  EXPECT_TRUE(spec.domain.given);
+  EXPECT_EQ(spec.domain.min, (Vec3d{-0.2, -0.2, -0.2}));
+  EXPECT_EQ(spec.domain.max, (Vec3d{2.2, 1.2, 1.5}));
+
+  ASSERT_EQ(spec.fills.size(), 2u);
+  EXPECT_EQ(spec.fills[0].box.min, (Vec3d{0, 0, 0}));
+  EXPECT_EQ(spec.fills[0].box.max, (Vec3d{0.5, 1, 0.4}));
+  EXPECT_EQ(spec.fills[0].velocity, (Vec3d{0.1, -0.2, 0}));
+  ASSERT_TRUE(spec.fills[0].surface_z.has_value());
+  EXPECT_DOUBLE_EQ(*spec.fills[0].surface_z, 0.4);
+  EXPECT_EQ(spec.fills[0].where.str(), path.string() + ":25:1");
+  EXPECT_EQ(spec.fills[1].velocity, (Vec3d{0, 0, 0}));
+  EXPECT_FALSE(spec.fills[1].surface_z.has_value());
+  EXPECT_EQ(spec.fills[1].where.line, 31);
+
+  ASSERT_EQ(spec.walls.size(), 2u);
+  const WallSpec& tank = spec.walls[0];
+  EXPECT_EQ(tank.name, "tank");
+  EXPECT_EQ(tank.box.max, (Vec3d{2, 1, 1.2}));
+  EXPECT_EQ(tank.faces, (std::array<bool, 6>{true, true, true, true, true, false}));
+  EXPECT_EQ(tank.layers, 4);
+  EXPECT_EQ(tank.model, WallModel::Dbc);
+  EXPECT_EQ(tank.where.line, 35);
+  const WallSpec& post = spec.walls[1];
+  EXPECT_EQ(post.name, "wall2");  // default: 1-based index
+  EXPECT_EQ(post.faces, (std::array<bool, 6>{true, true, true, true, true, true}));
+  EXPECT_EQ(post.layers, 3);
+
+  EXPECT_FALSE(spec.output.snapshots);
+  EXPECT_DOUBLE_EQ(spec.output.snapshot_every, 0.1);
+  EXPECT_DOUBLE_EQ(spec.output.series_every, 0.01);
+}
+
+TEST(CaseReader, MinimalTwoDimensionalFileTakesDefaults) {
+  const fs::path path = kCasesDir / "good" / "dambreak2d.toml";
+  const CaseSpec spec = read_case_file(path);
+  const SimulationSpec& s = spec.simulation;
+  EXPECT_EQ(s.name, "dambreak2d");  // the file stem
+  EXPECT_EQ(s.dimensions, 2);
+  EXPECT_DOUBLE_EQ(s.h_over_dp, 1.5);
+  EXPECT_EQ(s.kernel, KernelType::Wendland);
+  EXPECT_DOUBLE_EQ(s.cfl, 0.2);
+  EXPECT_DOUBLE_EQ(s.dt_min, 0);
+  EXPECT_DOUBLE_EQ(s.dt_max, 0);
+
+  const FluidSpec& f = spec.fluid;
+  EXPECT_DOUBLE_EQ(f.density, 1000);
+  EXPECT_DOUBLE_EQ(f.sound_speed, 0);  // 0: derived from sound_speed_coef
+  EXPECT_DOUBLE_EQ(f.sound_speed_coef, 20);
+  EXPECT_DOUBLE_EQ(f.gamma, 7);
+  EXPECT_EQ(f.gravity, (Vec3d{0, 0, -9.81}));
+  EXPECT_EQ(f.viscosity, ViscosityModel::Artificial);
+  EXPECT_DOUBLE_EQ(f.alpha, 0.01);
+  EXPECT_EQ(f.density_diffusion, DensityDiffusion::Molteni);
+  EXPECT_DOUBLE_EQ(f.delta, 0.1);
+  EXPECT_FALSE(spec.domain.given);
+
+  ASSERT_EQ(spec.fills.size(), 1u);
+  EXPECT_EQ(spec.fills[0].box.min, (Vec3d{0, 0, 0}));  // y is ignored in 2D and set to 0
+  EXPECT_EQ(spec.fills[0].box.max, (Vec3d{0.6, 0, 0.6}));
+
+  ASSERT_EQ(spec.walls.size(), 1u);
+  // 2D default: the four x/z faces.
+  EXPECT_EQ(spec.walls[0].faces, (std::array<bool, 6>{true, true, false, false, true, true}));
+  EXPECT_EQ(spec.walls[0].layers, 3);
+
+  EXPECT_TRUE(spec.output.snapshots);
+  EXPECT_DOUBLE_EQ(spec.output.snapshot_every, 0);
+  EXPECT_DOUBLE_EQ(spec.output.series_every, 0);
+}
+
+const std::string kMinimal = R"(
+[simulation]
+dp = 0.02
+end_time = 1.0
+
+[[fill]]
+min = [0, 0, 0]
+max = [1, 1, 1]
+)";
+
+TEST(CaseReader, ModelsMayBeBareStrings) {
+  const CaseSpec spec = read_case_string(
+      kMinimal + "[fluid]\nviscosity = \"laminar\"\ndensity_diffusion = \"none\"\n", "test");
+  EXPECT_EQ(spec.fluid.viscosity, ViscosityModel::Laminar);
+  EXPECT_DOUBLE_EQ(spec.fluid.kinematic_viscosity, 1e-6);
+  EXPECT_EQ(spec.fluid.density_diffusion, DensityDiffusion::None);
+}
+
+TEST(CaseReader, ArraysOfInlineTablesCountAsArraysOfTables) {
+  const CaseSpec spec = read_case_string(
+      "fill = [{ min = [0, 0, 0], max = [1, 1, 1] }]\n[simulation]\ndp = 0.02\nend_time = 1\n",
+      "inline");
+  ASSERT_EQ(spec.fills.size(), 1u);
+  EXPECT_EQ(spec.fills[0].box.max, (Vec3d{1, 1, 1}));
+}
+
+TEST(CaseReader, SourceNameOfAStringAppearsInErrorsAndAsDefaultName) {
+  EXPECT_EQ(read_case_string(kMinimal, "builtin:test").simulation.name, "builtin:test");
+  EXPECT_EQ(read_case_string(kMinimal, "builtin:test").source, "builtin:test");
+  try {
+    read_case_string("[simulation]\ndp = -1\nend_time = 1\n", "builtin:test");
+    FAIL() << "dp = -1 was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), "builtin:test:2:6");
+    EXPECT_EQ(e.message(), "simulation.dp = -1: must be > 0 m");
+  }
+  try {
+    read_case_string("[simulation\n", "builtin:broken");
+    FAIL() << "syntax error was accepted";
+  } catch (const Error& e) {
+    EXPECT_TRUE(e.where().starts_with("builtin:broken:1:")) << e.where();
+    EXPECT_NE(e.message().find("TOML syntax error"), std::string::npos) << e.message();
+  }
+}
+
+TEST(CaseReader, UnknownKeyIsReportedBeforeTheMissingKeyItHides) {
+  try {
+    read_case_string("[simulation]\ndp = 0.02\nend_tme = 1\n", "typo");
+    FAIL() << "end_tme was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), "typo:3:1");
+    EXPECT_NE(e.message().find("unknown key 'end_tme' in [simulation] (did you mean 'end_time'?)"),
+              std::string::npos)
+        << e.message();
+  }
+}
+
+TEST(CaseReader, UnreadableFileIsNamed) {
+  const fs::path path = kCasesDir / "good" / "does_not_exist.toml";
+  try {
+    read_case_file(path);
+    FAIL() << "a missing file was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), path.string());
+    EXPECT_NE(e.message().find("cannot read case file"), std::string::npos) << e.message();
+  }
+  EXPECT_THROW(read_case_file(kCasesDir / "good"), Error);  // a directory
+}
+
+TEST(SourceLocation, FormatsFileLineColumn) {
+  EXPECT_EQ((SourceLocation{"a.toml", 3, 7}.str()), "a.toml:3:7");
+  EXPECT_EQ((SourceLocation{"--set x=1", 0, 0}.str()), "--set x=1");
+}
+
+// ---- --set overrides ----------------------------------------------------------------------
+
+CaseSpec read_with(const std::vector<std::string>& overrides) {
+  return read_case_file(kCasesDir / "good" / "full3d.toml", overrides);
+}
+
+/// The error read_with(overrides) throws; fails the test when there is none.
+Error error_with(const std::vector<std::string>& overrides) {
+  try {
+    read_with(overrides);
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "overrides were accepted: " << ::testing::PrintToString(overrides);
+  return Error("", "");
+}
+
+TEST(CaseOverrides, ReplaceNumberArrayStringAndInlineTable) {
+  const CaseSpec spec = read_with({"simulation.dp=0.01", "fluid.gravity=[0,0,-1]",
+                                   "simulation.kernel=wendland", "simulation.name = renamed",
+                                   "fluid.viscosity={model=\"artificial\", alpha=0.05}"});
+  EXPECT_DOUBLE_EQ(spec.simulation.dp, 0.01);
+  EXPECT_EQ(spec.fluid.gravity, (Vec3d{0, 0, -1}));
+  EXPECT_EQ(spec.simulation.kernel, KernelType::Wendland);  // bare word: taken as a string
+  EXPECT_EQ(spec.simulation.name, "renamed");
+  EXPECT_EQ(spec.fluid.viscosity, ViscosityModel::Artificial);
+  EXPECT_DOUBLE_EQ(spec.fluid.alpha, 0.05);
+}
+
+TEST(CaseOverrides, NumericSegmentIndexesArrayOfTablesFromZero) {
+  const CaseSpec spec = read_with({"wall.1.layers=7", "fill.0.velocity=[1, 0, 0]"});
+  EXPECT_EQ(spec.walls[0].layers, 4);
+  EXPECT_EQ(spec.walls[1].layers, 7);
+  EXPECT_EQ(spec.fills[0].velocity, (Vec3d{1, 0, 0}));
+}
+
+TEST(CaseOverrides, CreateKeysTablesAndEntries) {
+  const CaseSpec spec = read_case_file(kCasesDir / "good" / "dambreak2d.toml",
+                                       {"output.snapshot_every=0.25", "fluid.sound_speed=30",
+                                        "fill.1.min=[1, 0, 0]", "fill.1.max=[1.2, 0, 0.2]"});
+  EXPECT_DOUBLE_EQ(spec.output.snapshot_every, 0.25);
+  EXPECT_DOUBLE_EQ(spec.fluid.sound_speed, 30);
+  ASSERT_EQ(spec.fills.size(), 2u);
+  EXPECT_EQ(spec.fills[1].box.max, (Vec3d{1.2, 0, 0.2}));
+  EXPECT_EQ(spec.fills[1].where.str(), "--set fill.1.min=[1, 0, 0]");
+}
+
+TEST(CaseOverrides, BadValueErrorNamesTheOption) {
+  const Error e = error_with({"simulation.dp=-1"});
+  EXPECT_EQ(e.where(), "--set simulation.dp=-1");
+  EXPECT_EQ(e.message(), "simulation.dp = -1: must be > 0 m");
+
+  const Error typo = error_with({"fluid.densty=1000"});
+  EXPECT_EQ(typo.where(), "--set fluid.densty=1000");
+  EXPECT_NE(typo.message().find("(did you mean 'density'?)"), std::string::npos) << typo.message();
+
+  const Error word = error_with({"simulation.kernel=gauss"});
+  EXPECT_EQ(word.where(), "--set simulation.kernel=gauss");
+  EXPECT_NE(word.message().find("simulation.kernel = \"gauss\": must be one of"), std::string::npos)
+      << word.message();
+
+  const Error broken = error_with({"fluid.gravity=[0, 0"});
+  EXPECT_EQ(broken.where(), "--set fluid.gravity=[0, 0");
+  EXPECT_NE(broken.message().find("is not valid TOML"), std::string::npos) << broken.message();
+}
+
+TEST(CaseOverrides, MalformedOptionsPointAtSet) {
+  for (const std::string& option :
+       {std::string("simulation.dp"), std::string("=0.01"), std::string("simulation..dp=1"),
+        std::string("wall.5.layers=2"), std::string("wall.layers=2"),
+        std::string("simulation.dp.x=1"), std::string("wall.0=1")}) {
+    const Error e = error_with({option});
+    EXPECT_EQ(e.where(), "--set") << option << " -> " << e.what();
+    EXPECT_NE(e.message().find(option), std::string::npos) << e.message();
+  }
+  EXPECT_NE(error_with({"wall.5.layers=2"}).message().find("out of range"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace netsph
