@@ -59,7 +59,11 @@ void CellGrid::sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& orde
   for (std::int64_t i = 0; i < n; ++i) {
     if (cell[i] >= 0) ++begin_[cell[i] + 1], ++kept;
   }
-  for (std::int64_t c = 0; c < nc; ++c) begin_[c + 1] += begin_[c];
+  occupied_.clear();
+  for (std::int64_t c = 0; c < nc; ++c) {
+    if (begin_[c + 1] > 0) occupied_.push_back(c);
+    begin_[c + 1] += begin_[c];
+  }
   order.resize(kept);
   // Use begin_ shifted by one as the running insertion cursor, then shift back.
   for (std::int64_t i = 0; i < n; ++i) {

@@ -82,12 +82,13 @@ template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff>
 RateReductions rates_loop(const FluidModel& m, const CellGrid& grid, const InteractionView& v,
                           std::span<const ParticleKind> kind, std::vector<Vec3f>& acc,
                           std::vector<Real>& drho) {
-  const std::int64_t ncells = grid.cell_count();
+  const auto& cells = grid.occupied_cells();
+  const auto ncells = static_cast<std::int64_t>(cells.size());
   double max_acc2 = 0, max_visc = 0;
 #pragma omp parallel for schedule(dynamic, 64) reduction(max : max_acc2, max_visc)
-  for (std::int64_t c = 0; c < ncells; ++c) {
+  for (std::int64_t k = 0; k < ncells; ++k) {
+    const std::int64_t c = cells[k];
     const IndexRange own = grid.cell_range(c);
-    if (own.begin == own.end) continue;
     std::array<IndexRange, 25> ranges;
     const int nranges = grid.neighbour_ranges(c, ranges);
     for (std::uint32_t a = own.begin; a < own.end; ++a) {
