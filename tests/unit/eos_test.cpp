@@ -28,7 +28,8 @@ TEST(TaitEos, RoundTrip) {
 TEST(TaitEos, SoundSpeedAtRest) {
   const TaitEos e = TaitEos::make(1000, 30, 7);
   const double d = 1e-2;
-  const double dpdrho = (e.pressure(static_cast<Real>(1000 + d)) - e.pressure(static_cast<Real>(1000 - d))) / (2 * d);
+  const double dpdrho =
+      (e.pressure(static_cast<Real>(1000 + d)) - e.pressure(static_cast<Real>(1000 - d))) / (2 * d);
   EXPECT_NEAR(dpdrho, 30.0 * 30.0, 0.01 * 900);
 }
 

@@ -32,8 +32,12 @@ void expect_unit_integral() {
   EXPECT_NEAR(radial_integral<K>(3, 2.0), 1.0, 1e-5);
 }
 
-TEST(Kernel, WendlandIntegratesToOne) { expect_unit_integral<WendlandC2>(); }
-TEST(Kernel, CubicSplineIntegratesToOne) { expect_unit_integral<CubicSpline>(); }
+TEST(Kernel, WendlandIntegratesToOne) {
+  expect_unit_integral<WendlandC2>();
+}
+TEST(Kernel, CubicSplineIntegratesToOne) {
+  expect_unit_integral<CubicSpline>();
+}
 
 template <class K>
 void expect_gradient_matches_finite_difference(int dims) {
@@ -42,7 +46,8 @@ void expect_gradient_matches_finite_difference(int dims) {
   for (double q = 0.05; q < 1.99; q += 0.05) {
     const double r = q * h, e = 1e-4 * h;
     const double fd = (static_cast<double>(kernel_value<K>(s, static_cast<Real>(r + e))) -
-                       static_cast<double>(kernel_value<K>(s, static_cast<Real>(r - e)))) / (2 * e);
+                       static_cast<double>(kernel_value<K>(s, static_cast<Real>(r - e)))) /
+                      (2 * e);
     const double analytic = static_cast<double>(kernel_grad_factor<K>(s, static_cast<Real>(r))) * r;
     EXPECT_NEAR(analytic, fd, 2e-3 * std::fabs(s.alpha_d / h)) << "q = " << q;
   }
@@ -88,7 +93,7 @@ void expect_lattice_consistency(int dims) {
         const double r = std::sqrt(rb[0] * rb[0] + rb[1] * rb[1] + rb[2] * rb[2]);
         sum_w += vol * static_cast<double>(kernel_value<K>(s, static_cast<Real>(r)));
         const double f = static_cast<double>(kernel_grad_factor<K>(s, static_cast<Real>(r)));
-        const double df = c[0] * rb[0] + c[1] * rb[1] + c[2] * rb[2];  // f_b - f_a, a at origin
+        const double df = c[0] * rb[0] + c[1] * rb[1] + c[2] * rb[2];    // f_b - f_a, a at origin
         for (int a = 0; a < 3; ++a) grad[a] += vol * df * f * (-rb[a]);  // r_ab = -r_b
       }
   EXPECT_NEAR(sum_w, 1.0, 0.02) << "dims " << dims;

@@ -110,8 +110,11 @@ TEST(NeighborSearch, SkinCoversDisplacedParticles) {
 }
 
 TEST(NeighborSearch, ParticlesOutsideTheGridAreDropped) {
-  std::vector<Vec3d> pos = {{0.05, 0.05, 0.05}, {-0.01, 0.05, 0.05}, {0.05, 0.05, 0.2},
-                            {0.09, 0.01, 0.01}, {0.05, 0.05, std::nan("")}};
+  std::vector<Vec3d> pos = {{0.05, 0.05, 0.05},
+                            {-0.01, 0.05, 0.05},
+                            {0.05, 0.05, 0.2},
+                            {0.09, 0.01, 0.01},
+                            {0.05, 0.05, std::nan("")}};
   CellGrid grid;
   grid.configure({0, 0, 0}, {0.1, 0.1, 0.1}, 0.02, 0.0, 3);
   std::vector<std::uint32_t> order;

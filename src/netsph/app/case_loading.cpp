@@ -22,7 +22,8 @@ CaseSpec load_case(const CaseChoice& choice) {
   builtin = builtin_case_text(name);
   if (builtin.empty()) {
     std::string names;
-    for (const auto& c : builtin_cases()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    for (const auto& c : builtin_cases())
+      names += (names.empty() ? "" : ", ") + std::string(c.name);
     throw Error("builtin:" + name, "no such built-in case; built-in cases: " + names);
   }
   return read_case_string(builtin, "builtin:" + name, choice.overrides);

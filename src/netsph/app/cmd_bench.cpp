@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 #include "netsph/app/commands.hpp"
 #include "netsph/core/error.hpp"
@@ -40,10 +40,12 @@ int bench_command(const BenchArgs& args) {
   if (args.steps < 1) throw Error("--steps", "must be >= 1");
   // Particle count at the reference dp, to pick dp for each requested size (N ~ dp^-3).
   const double n_ref = static_cast<double>(Simulation(bench_case(kReferenceDp)).particles().size());
-  spdlog::info("bench: 3D dam break (cases/dambreak3d.toml), backend {}, {} threads, {} steps "
-               "after one warm-up step", backend, threads, args.steps);
-  fmt::print("{:>12} {:>10} {:>7} {:>9} {:>18} {:>14}\n", "particles", "dp [m]", "steps", "wall [s]",
-             "particle-steps/s", "bytes/particle");
+  spdlog::info(
+      "bench: 3D dam break (cases/dambreak3d.toml), backend {}, {} threads, {} steps "
+      "after one warm-up step",
+      backend, threads, args.steps);
+  fmt::print("{:>12} {:>10} {:>7} {:>9} {:>18} {:>14}\n", "particles", "dp [m]", "steps",
+             "wall [s]", "particle-steps/s", "bytes/particle");
   std::vector<BenchRow> rows;
   for (double target : args.sizes) {
     if (!(target >= 1000)) throw Error("--sizes", "particle counts must be >= 1000");
@@ -59,8 +61,8 @@ int bench_command(const BenchArgs& args) {
     row.steps = args.steps;
     row.rate = static_cast<double>(row.particles) * args.steps / row.wall_s;
     row.bytes = sim.bytes_per_particle();
-    fmt::print("{:>12} {:>10.5f} {:>7} {:>9.2f} {:>18.3e} {:>14.0f}\n", row.particles, row.dp, row.steps,
-               row.wall_s, row.rate, row.bytes);
+    fmt::print("{:>12} {:>10.5f} {:>7} {:>9.2f} {:>18.3e} {:>14.0f}\n", row.particles, row.dp,
+               row.steps, row.wall_s, row.rate, row.bytes);
     std::fflush(stdout);
     rows.push_back(row);
   }
@@ -70,8 +72,11 @@ int bench_command(const BenchArgs& args) {
     j["backend"] = backend;
     j["threads"] = threads;
     for (const auto& r : rows) {
-      j["runs"].push_back({{"particles", r.particles}, {"dp_m", r.dp}, {"steps", r.steps},
-                           {"wall_s", r.wall_s}, {"particle_steps_per_s", r.rate},
+      j["runs"].push_back({{"particles", r.particles},
+                           {"dp_m", r.dp},
+                           {"steps", r.steps},
+                           {"wall_s", r.wall_s},
+                           {"particle_steps_per_s", r.rate},
                            {"bytes_per_particle", r.bytes}});
     }
     std::ofstream(args.json_path) << j.dump(2) << "\n";

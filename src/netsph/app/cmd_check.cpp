@@ -39,15 +39,17 @@ int check_command(const CheckArgs& args) {
 
   spdlog::info("memory: {:.0f} bytes/particle, {:.1f} MiB in all", sim.bytes_per_particle(),
                sim.bytes_per_particle() * np / (1024.0 * 1024.0));
-  spdlog::info("initial dt = {:.3g} s (CFL {:g}; force limit {:.3g} s, acoustic-viscous limit {:.3g} s)",
-               dt0, spec.simulation.cfl, lim.force, lim.acoustic);
-  spdlog::info("timing sample: {} steps in {:.2f} s on {} threads = {:.3g} particle-steps/s", n, wall,
-               threads, np * n / wall);
-  spdlog::info("estimate for end_time = {:g} s: about {:.3g} steps, {} (dt varies as the flow "
-               "develops: take this as an order of magnitude)",
-               spec.simulation.end_time, n_total,
-               fmt::format("{:.0f} min {:02.0f} s", std::floor(n_total * per_step / 60),
-                           std::fmod(n_total * per_step, 60.0)));
+  spdlog::info(
+      "initial dt = {:.3g} s (CFL {:g}; force limit {:.3g} s, acoustic-viscous limit {:.3g} s)",
+      dt0, spec.simulation.cfl, lim.force, lim.acoustic);
+  spdlog::info("timing sample: {} steps in {:.2f} s on {} threads = {:.3g} particle-steps/s", n,
+               wall, threads, np * n / wall);
+  spdlog::info(
+      "estimate for end_time = {:g} s: about {:.3g} steps, {} (dt varies as the flow "
+      "develops: take this as an order of magnitude)",
+      spec.simulation.end_time, n_total,
+      fmt::format("{:.0f} min {:02.0f} s", std::floor(n_total * per_step / 60),
+                  std::fmod(n_total * per_step, 60.0)));
   spdlog::info("outputs: a snapshot every {:g} s, a series row every {:g} s",
                snapshot_interval(spec), series_interval(spec));
   return 0;

@@ -10,19 +10,22 @@
 
 namespace netsph::app {
 namespace {
-extern "C" void on_interrupt(int) { request_stop(); }
+extern "C" void on_interrupt(int) {
+  request_stop();
+}
 }  // namespace
 
 int run_command(const RunArgs& args) {
   const CaseSpec spec = load_case(args.case_choice);
   const std::string backend = resolve_backend(args.backend);
   const int threads = apply_threads(args.threads);
-  const std::filesystem::path out =
-      args.out_dir.empty() ? std::filesystem::path("out") / spec.simulation.name
-                           : std::filesystem::path(args.out_dir);
+  const std::filesystem::path out = args.out_dir.empty()
+                                        ? std::filesystem::path("out") / spec.simulation.name
+                                        : std::filesystem::path(args.out_dir);
   log_also_to_file(out / "log.txt");
 
-  spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name, spec.source);
+  spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,
+               spec.source);
   spdlog::info("backend {}, {} OpenMP threads, output folder {}", backend, threads,
                std::filesystem::absolute(out).string());
   Simulation sim(spec);
@@ -40,13 +43,15 @@ int run_command(const RunArgs& args) {
   std::signal(SIGTERM, SIG_DFL);
 
   for (const auto& w : r.warnings) spdlog::warn("{}", w);
-  spdlog::info("{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
-               r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
-  spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json", r.snapshots,
-               std::filesystem::absolute(out).string());
+  spdlog::info(
+      "{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
+      r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
+  spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
+               r.snapshots, std::filesystem::absolute(out).string());
   if (r.status == "unstable") {
     spdlog::error("the simulation became unstable: {}", r.message);
-    spdlog::error("the outputs written up to that point, and a final snapshot, are in {}", out.string());
+    spdlog::error("the outputs written up to that point, and a final snapshot, are in {}",
+                  out.string());
     return 3;
   }
   if (r.status == "interrupted") {

@@ -19,9 +19,9 @@ CaseSpec load_case(const CaseChoice& choice);
 
 struct RunArgs {
   CaseChoice case_choice;
-  std::string out_dir;      ///< empty: out/<case name>
+  std::string out_dir;  ///< empty: out/<case name>
   std::string backend = "auto";
-  int threads = 0;          ///< 0: OpenMP default
+  int threads = 0;  ///< 0: OpenMP default
   std::int64_t max_steps = 0;
   bool plain_progress = false;
   bool quiet = false;

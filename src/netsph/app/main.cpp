@@ -1,8 +1,8 @@
 // netsph command line: run, check, bench, cases. Errors become one line on stderr and a
 // non-zero exit code: 1 for bad input, 3 for an unstable run, 130 for an interrupted one.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include "netsph/app/commands.hpp"
 #include "netsph/app/logging.hpp"
@@ -24,7 +24,8 @@ std::vector<double> parse_sizes(const std::string& text) {
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     try {
       std::size_t used = 0;
       sizes.push_back(std::stod(item, &used));
@@ -50,17 +51,21 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "only warnings and errors");
 
   RunArgs run;
-  auto* run_cmd = app.add_subcommand("run", "run a case (the built-in default case without a file)");
+  auto* run_cmd =
+      app.add_subcommand("run", "run a case (the built-in default case without a file)");
   add_case_options(run_cmd, run.case_choice);
   run_cmd->add_option("-o,--output", run.out_dir, "output folder (default: out/<case name>)");
   run_cmd->add_option("--backend", run.backend, "auto, cpu or cuda")->capture_default_str();
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: all cores)")->capture_default_str();
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: all cores)")
+      ->capture_default_str();
   run_cmd->add_option("--max-steps", run.max_steps, "stop after this many steps (0: no limit)");
-  run_cmd->add_flag("--plain-progress", run.plain_progress, "progress as periodic lines, not a bar");
+  run_cmd->add_flag("--plain-progress", run.plain_progress,
+                    "progress as periodic lines, not a bar");
 
   CheckArgs check;
   auto* check_cmd = app.add_subcommand(
-      "check", "validate a case; print particle counts, memory, initial dt and a run-time estimate");
+      "check",
+      "validate a case; print particle counts, memory, initial dt and a run-time estimate");
   add_case_options(check_cmd, check.case_choice);
   check_cmd->add_option("--threads", check.threads, "OpenMP threads (0: all cores)");
   check_cmd->add_option("--sample-steps", check.sample_steps, "steps timed for the estimate")

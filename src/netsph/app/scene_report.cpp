@@ -15,7 +15,8 @@ void log_scene(const Simulation& sim) {
                static_cast<double>(m.eos.rho0));
   spdlog::info("particles: {} fluid, {} boundary, {} total", p.count(ParticleKind::Fluid),
                p.count(ParticleKind::Wall), p.size());
-  for (const auto& src : s.sources) spdlog::info("  {:<16} {:>10} particles", src.name, src.particles);
+  for (const auto& src : s.sources)
+    spdlog::info("  {:<16} {:>10} particles", src.name, src.particles);
   spdlog::info("domain [{:.4g}, {:.4g}, {:.4g}] .. [{:.4g}, {:.4g}, {:.4g}] m{}", s.domain_min.x,
                s.domain_min.y, s.domain_min.z, s.domain_max.x, s.domain_max.y, s.domain_max.z,
                spec.domain.given ? "" : " (default: particles' bounding box + margin)");

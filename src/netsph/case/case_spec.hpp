@@ -20,37 +20,37 @@ struct SourceLocation {
   std::string str() const;  ///< "file:line:column" (or just "file" when line is 0)
 };
 
-
 /// [simulation]
 struct SimulationSpec {
-  std::string name;              ///< case name; default: file stem
-  int dimensions = 3;            ///< 2 (x-z plane) or 3
-  double dp = 0;                 ///< particle spacing, m (required, > 0)
-  double h_over_dp = 1.5;        ///< smoothing length h = h_over_dp * dp; [1, 3]
+  std::string name;        ///< case name; default: file stem
+  int dimensions = 3;      ///< 2 (x-z plane) or 3
+  double dp = 0;           ///< particle spacing, m (required, > 0)
+  double h_over_dp = 1.5;  ///< smoothing length h = h_over_dp * dp; [1, 3]
   KernelType kernel = KernelType::Wendland;
-  double end_time = 0;           ///< s (required, > 0)
-  double cfl = 0.2;              ///< Courant number for the variable dt; (0, 1]
-  double dt_min = 0;             ///< s; a dt below it stops the run as unstable. 0: 1e-4 x initial dt
-  double dt_max = 0;             ///< s; 0: no cap
+  double end_time = 0;  ///< s (required, > 0)
+  double cfl = 0.2;     ///< Courant number for the variable dt; (0, 1]
+  double dt_min = 0;    ///< s; a dt below it stops the run as unstable. 0: 1e-4 x initial dt
+  double dt_max = 0;    ///< s; 0: no cap
 };
 
 /// [fluid]
 struct FluidSpec {
-  double density = 1000.0;       ///< reference density rho0, kg/m^3
-  double sound_speed = 0;        ///< c0, m/s; 0: use sound_speed_coef
-  double sound_speed_coef = 20;  ///< c0 = coef * sqrt(|g| * H), H = deepest fill (used when sound_speed = 0)
-  double gamma = 7.0;            ///< Tait exponent
-  Vec3d gravity{0, 0, -9.81};    ///< m/s^2
+  double density = 1000.0;  ///< reference density rho0, kg/m^3
+  double sound_speed = 0;   ///< c0, m/s; 0: use sound_speed_coef
+  double sound_speed_coef =
+      20;              ///< c0 = coef * sqrt(|g| * H), H = deepest fill (used when sound_speed = 0)
+  double gamma = 7.0;  ///< Tait exponent
+  Vec3d gravity{0, 0, -9.81};  ///< m/s^2
   ViscosityModel viscosity = ViscosityModel::Artificial;
-  double alpha = 0.01;           ///< artificial viscosity coefficient
+  double alpha = 0.01;                ///< artificial viscosity coefficient
   double kinematic_viscosity = 1e-6;  ///< nu, m^2/s, for the laminar model
   DensityDiffusion density_diffusion = DensityDiffusion::Molteni;
-  double delta = 0.1;            ///< delta-SPH coefficient
+  double delta = 0.1;  ///< delta-SPH coefficient
 };
 
 /// [domain]. Particles that leave it are removed (and counted in the warnings).
 struct DomainSpec {
-  bool given = false;            ///< false: bounding box of all particles plus a margin of 2h
+  bool given = false;  ///< false: bounding box of all particles plus a margin of 2h
   Vec3d min{}, max{};
 };
 
@@ -61,8 +61,9 @@ struct BoxSpec {
 /// [[fill]]: a box of fluid on the dp lattice, hydrostatic density below `surface_z`.
 struct FillSpec {
   BoxSpec box;
-  Vec3d velocity{};                ///< initial velocity, m/s
-  std::optional<double> surface_z; ///< free-surface height for the hydrostatic density; default: box top
+  Vec3d velocity{};  ///< initial velocity, m/s
+  std::optional<double>
+      surface_z;  ///< free-surface height for the hydrostatic density; default: box top
   SourceLocation where;
 };
 
@@ -71,23 +72,23 @@ enum Face : int { kXMin = 0, kXMax = 1, kYMin = 2, kYMax = 3, kZMin = 4, kZMax =
 
 /// [[wall]]: layers of boundary particles outside the chosen faces of a box.
 struct WallSpec {
-  std::string name;                ///< default "wall<N>"
-  BoxSpec box;                     ///< the fluid side of the wall (the inner surface of a tank)
-  std::array<bool, 6> faces{};     ///< which faces of the box carry wall particles
-  int layers = 3;                  ///< particle layers; default covers the kernel support
+  std::string name;             ///< default "wall<N>"
+  BoxSpec box;                  ///< the fluid side of the wall (the inner surface of a tank)
+  std::array<bool, 6> faces{};  ///< which faces of the box carry wall particles
+  int layers = 3;               ///< particle layers; default covers the kernel support
   WallModel model = WallModel::Dbc;
   SourceLocation where;
 };
 
 /// [output]
 struct OutputSpec {
-  bool snapshots = true;           ///< write HDF5 + XDMF snapshots
-  double snapshot_every = 0;       ///< s; 0: end_time / 50
-  double series_every = 0;         ///< s; 0: snapshot_every / 10
+  bool snapshots = true;      ///< write HDF5 + XDMF snapshots
+  double snapshot_every = 0;  ///< s; 0: end_time / 50
+  double series_every = 0;    ///< s; 0: snapshot_every / 10
 };
 
 struct CaseSpec {
-  std::string source;              ///< file path, or "builtin:<name>"
+  std::string source;  ///< file path, or "builtin:<name>"
   SimulationSpec simulation;
   FluidSpec fluid;
   DomainSpec domain;

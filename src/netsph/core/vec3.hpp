@@ -35,32 +35,50 @@ struct Vec3 {
 };
 
 template <typename T>
-NETSPH_HD constexpr Vec3<T> operator+(Vec3<T> a, const Vec3<T>& b) { return a += b; }
+NETSPH_HD constexpr Vec3<T> operator+(Vec3<T> a, const Vec3<T>& b) {
+  return a += b;
+}
 template <typename T>
-NETSPH_HD constexpr Vec3<T> operator-(Vec3<T> a, const Vec3<T>& b) { return a -= b; }
+NETSPH_HD constexpr Vec3<T> operator-(Vec3<T> a, const Vec3<T>& b) {
+  return a -= b;
+}
 template <typename T>
-NETSPH_HD constexpr Vec3<T> operator-(const Vec3<T>& a) { return {-a.x, -a.y, -a.z}; }
+NETSPH_HD constexpr Vec3<T> operator-(const Vec3<T>& a) {
+  return {-a.x, -a.y, -a.z};
+}
 template <typename T>
-NETSPH_HD constexpr Vec3<T> operator*(Vec3<T> a, T s) { return a *= s; }
+NETSPH_HD constexpr Vec3<T> operator*(Vec3<T> a, T s) {
+  return a *= s;
+}
 template <typename T>
-NETSPH_HD constexpr Vec3<T> operator*(T s, Vec3<T> a) { return a *= s; }
+NETSPH_HD constexpr Vec3<T> operator*(T s, Vec3<T> a) {
+  return a *= s;
+}
 template <typename T>
-NETSPH_HD constexpr Vec3<T> operator/(Vec3<T> a, T s) { return a *= (T(1) / s); }
+NETSPH_HD constexpr Vec3<T> operator/(Vec3<T> a, T s) {
+  return a *= (T(1) / s);
+}
 template <typename T>
 NETSPH_HD constexpr bool operator==(const Vec3<T>& a, const Vec3<T>& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
 template <typename T>
-NETSPH_HD constexpr T dot(const Vec3<T>& a, const Vec3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+NETSPH_HD constexpr T dot(const Vec3<T>& a, const Vec3<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <typename T>
 NETSPH_HD constexpr Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <typename T>
-NETSPH_HD constexpr T norm2(const Vec3<T>& a) { return dot(a, a); }
+NETSPH_HD constexpr T norm2(const Vec3<T>& a) {
+  return dot(a, a);
+}
 template <typename T>
-NETSPH_HD T norm(const Vec3<T>& a) { return std::sqrt(dot(a, a)); }
+NETSPH_HD T norm(const Vec3<T>& a) {
+  return std::sqrt(dot(a, a));
+}
 
 using Vec3f = Vec3<float>;
 using Vec3d = Vec3<double>;

@@ -50,8 +50,8 @@ std::vector<Vec3d> fill_box(const LatticeBox& box, double dp) {
   return pts;
 }
 
-std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp, const std::array<bool, 6>& faces,
-                                   int layers) {
+std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp,
+                                   const std::array<bool, 6>& faces, int layers) {
   const auto n = lattice_counts(box, dp);
   // Index range per axis: extend by `layers` on a side only if that face carries a wall.
   std::array<int, 3> lo{}, hi{};
@@ -67,7 +67,8 @@ std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp, const std::
         const int idx[3] = {i, j, k};
         bool outside = false;
         for (int a = 0; a < 3; ++a) outside = outside || idx[a] < 0 || idx[a] >= n[a];
-        if (outside) pts.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
+        if (outside)
+          pts.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
       }
   return pts;
 }

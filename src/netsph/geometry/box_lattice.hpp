@@ -28,7 +28,7 @@ std::vector<Vec3d> fill_box(const LatticeBox& box, double dp);
 /// Wall particle positions: lattice points outside the box, up to `layers` spacings beyond
 /// each chosen face (order xmin, xmax, ymin, ymax, zmin, zmax); edges and corners between two
 /// chosen faces are filled so that no fluid particle sees a gap.
-std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp, const std::array<bool, 6>& faces,
-                                   int layers);
+std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp,
+                                   const std::array<bool, 6>& faces, int layers);
 
 }  // namespace netsph

@@ -17,14 +17,14 @@ namespace netsph {
 
 /// One snapshot's particle fields; all spans have the same length (the particle count).
 struct SnapshotFields {
-  double time = 0;          ///< s
+  double time = 0;  ///< s
   std::int64_t step = 0;
-  std::span<const Vec3d> position;    ///< m
-  std::span<const Vec3f> velocity;    ///< m/s
-  std::span<const float> density;     ///< kg/m^3
-  std::span<const float> pressure;    ///< Pa
-  std::span<const std::uint8_t> kind; ///< particle kind code (0 fluid, 1 boundary, ...)
-  std::span<const std::uint32_t> id;  ///< unique particle id
+  std::span<const Vec3d> position;     ///< m
+  std::span<const Vec3f> velocity;     ///< m/s
+  std::span<const float> density;      ///< kg/m^3
+  std::span<const float> pressure;     ///< Pa
+  std::span<const std::uint8_t> kind;  ///< particle kind code (0 fluid, 1 boundary, ...)
+  std::span<const std::uint32_t> id;   ///< unique particle id
 };
 
 class SnapshotWriter {

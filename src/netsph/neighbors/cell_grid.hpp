@@ -61,7 +61,9 @@ class CellGrid {
  private:
   struct CellScratch {
     std::vector<std::int64_t> cell_of_particle;
-    std::size_t capacity_bytes() const { return cell_of_particle.capacity() * sizeof(std::int64_t); }
+    std::size_t capacity_bytes() const {
+      return cell_of_particle.capacity() * sizeof(std::int64_t);
+    }
   };
 
   Vec3d origin_{};

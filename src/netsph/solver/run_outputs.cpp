@@ -7,7 +7,8 @@
 namespace netsph {
 
 double snapshot_interval(const CaseSpec& spec) {
-  return spec.output.snapshot_every > 0 ? spec.output.snapshot_every : spec.simulation.end_time / 50;
+  return spec.output.snapshot_every > 0 ? spec.output.snapshot_every
+                                        : spec.simulation.end_time / 50;
 }
 
 double series_interval(const CaseSpec& spec) {

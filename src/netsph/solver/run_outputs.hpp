@@ -17,9 +17,9 @@ namespace netsph {
 /// Global quantities of the current state (double sums, fluid particles only unless noted).
 struct GlobalMeasures {
   std::size_t fluid = 0, boundary = 0;
-  double kinetic_energy = 0;  ///< J (J/m in 2D)
-  double fluid_mass = 0;      ///< kg (kg/m in 2D)
-  double max_speed = 0;       ///< m/s
+  double kinetic_energy = 0;                ///< J (J/m in 2D)
+  double fluid_mass = 0;                    ///< kg (kg/m in 2D)
+  double max_speed = 0;                     ///< m/s
   double min_density = 0, max_density = 0;  ///< kg/m^3
 };
 

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 #include <omp.h>
-#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 #include "netsph/io/atomic_file.hpp"
 #include "netsph/io/progress.hpp"
@@ -18,12 +18,17 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 
-const char* kernel_name(KernelType k) { return k == KernelType::Wendland ? "wendland" : "cubic_spline"; }
+const char* kernel_name(KernelType k) {
+  return k == KernelType::Wendland ? "wendland" : "cubic_spline";
+}
 const char* diffusion_name(DensityDiffusion d) {
   switch (d) {
-    case DensityDiffusion::None: return "none";
-    case DensityDiffusion::Molteni: return "molteni";
-    case DensityDiffusion::Fourtakas: return "fourtakas";
+    case DensityDiffusion::None:
+      return "none";
+    case DensityDiffusion::Molteni:
+      return "molteni";
+    case DensityDiffusion::Fourtakas:
+      return "fourtakas";
   }
   return "?";
 }
@@ -45,23 +50,28 @@ nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const Run
   j["case"] = {{"name", s.simulation.name}, {"source", s.source}};
   j["status"] = r.status;
   if (!r.message.empty()) j["message"] = r.message;
-  j["model"] = {{"dimensions", s.simulation.dimensions},
-                {"dp_m", s.simulation.dp},
-                {"h_m", sim.model().kernel.h},
-                {"kernel", kernel_name(s.simulation.kernel)},
-                {"sound_speed_m_s", sim.scene().sound_speed},
-                {"density_diffusion", diffusion_name(s.fluid.density_diffusion)},
-                {"viscosity", s.fluid.viscosity == ViscosityModel::Laminar ? "laminar" : "artificial"}};
-  j["particles"] = {{"fluid", g.fluid}, {"boundary", g.boundary},
-                    {"lost", sim.diagnostics().lost_total}};
-  j["time"] = {{"simulated_s", r.sim_time}, {"end_time_s", s.simulation.end_time},
-               {"steps", r.steps}, {"last_dt_s", sim.last_dt()}};
+  j["model"] = {
+      {"dimensions", s.simulation.dimensions},
+      {"dp_m", s.simulation.dp},
+      {"h_m", sim.model().kernel.h},
+      {"kernel", kernel_name(s.simulation.kernel)},
+      {"sound_speed_m_s", sim.scene().sound_speed},
+      {"density_diffusion", diffusion_name(s.fluid.density_diffusion)},
+      {"viscosity", s.fluid.viscosity == ViscosityModel::Laminar ? "laminar" : "artificial"}};
+  j["particles"] = {
+      {"fluid", g.fluid}, {"boundary", g.boundary}, {"lost", sim.diagnostics().lost_total}};
+  j["time"] = {{"simulated_s", r.sim_time},
+               {"end_time_s", s.simulation.end_time},
+               {"steps", r.steps},
+               {"last_dt_s", sim.last_dt()}};
   j["performance"] = {{"wall_s", r.wall_s},
                       {"particle_steps_per_s", r.particle_steps_per_s},
                       {"bytes_per_particle", r.bytes_per_particle},
                       {"threads", omp_get_max_threads()}};
-  j["final_state"] = {{"kinetic_energy_J", g.kinetic_energy}, {"fluid_mass_kg", g.fluid_mass},
-                      {"max_speed_m_s", g.max_speed}, {"min_density", g.min_density},
+  j["final_state"] = {{"kinetic_energy_J", g.kinetic_energy},
+                      {"fluid_mass_kg", g.fluid_mass},
+                      {"max_speed_m_s", g.max_speed},
+                      {"min_density", g.min_density},
                       {"max_density", g.max_density}};
   j["outputs"] = {{"folder", std::filesystem::absolute(opt.out_dir).string()},
                   {"snapshots", r.snapshots},
@@ -73,8 +83,12 @@ nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const Run
 
 }  // namespace
 
-void request_stop() { g_stop.store(true); }
-bool stop_requested() { return g_stop.load(); }
+void request_stop() {
+  g_stop.store(true);
+}
+bool stop_requested() {
+  return g_stop.load();
+}
 
 RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   const CaseSpec& spec = sim.spec();
@@ -83,7 +97,9 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   ProgressReporter progress(end, stderr, opt.plain_progress);
 
   const auto t0 = std::chrono::steady_clock::now();
-  auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  auto wall = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
   RunReport r;
   double particle_steps = 0;
   outputs.maybe_write(sim, 0.0);
@@ -95,7 +111,8 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
       }
       if (stop_requested()) {
         r.status = "interrupted";
-        r.message = fmt::format("stopped by the user at t = {:.6g} s (step {})", sim.time(), sim.steps());
+        r.message =
+            fmt::format("stopped by the user at t = {:.6g} s (step {})", sim.time(), sim.steps());
         break;
       }
       particle_steps += static_cast<double>(sim.particles().size());

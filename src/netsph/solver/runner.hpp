@@ -14,16 +14,16 @@ namespace netsph {
 
 struct RunOptions {
   std::filesystem::path out_dir = "out";
-  bool progress = true;          ///< show progress on stderr
-  bool plain_progress = false;   ///< periodic lines even on a terminal
-  std::int64_t max_steps = 0;    ///< stop after this many steps (0: run to end_time)
+  bool progress = true;         ///< show progress on stderr
+  bool plain_progress = false;  ///< periodic lines even on a terminal
+  std::int64_t max_steps = 0;   ///< stop after this many steps (0: run to end_time)
 };
 
 struct RunReport {
-  std::string status;            ///< "completed", "unstable", "interrupted", "step limit"
-  std::string message;           ///< diagnosis when not completed
+  std::string status;   ///< "completed", "unstable", "interrupted", "step limit"
+  std::string message;  ///< diagnosis when not completed
   std::int64_t steps = 0;
-  double sim_time = 0;           ///< s
+  double sim_time = 0;  ///< s
   double wall_s = 0;
   double particle_steps_per_s = 0;
   double bytes_per_particle = 0;

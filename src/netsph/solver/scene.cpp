@@ -13,7 +13,9 @@
 namespace netsph {
 namespace {
 
-LatticeBox lattice_box(const BoxSpec& b, int dims) { return {b.min, b.max, dims}; }
+LatticeBox lattice_box(const BoxSpec& b, int dims) {
+  return {b.min, b.max, dims};
+}
 
 /// Free-surface height of a fill: given, or the top of its particle lattice.
 double surface_of(const FillSpec& f, double dp, int dims) {
@@ -30,8 +32,9 @@ double sound_speed_of(const CaseSpec& spec, double depth) {
   if (spec.fluid.sound_speed > 0) return spec.fluid.sound_speed;
   const double g = norm(spec.fluid.gravity);
   if (!(g > 0) || !(depth > 0)) {
-    throw Error(spec.source, "fluid.sound_speed_coef needs gravity and a fluid depth to set c0 = "
-                             "coef * sqrt(|g| H); give fluid.sound_speed (m/s) instead");
+    throw Error(spec.source,
+                "fluid.sound_speed_coef needs gravity and a fluid depth to set c0 = "
+                "coef * sqrt(|g| H); give fluid.sound_speed (m/s) instead");
   }
   return spec.fluid.sound_speed_coef * std::sqrt(g * depth);
 }
@@ -141,10 +144,11 @@ Scene build_scene(const CaseSpec& spec) {
                           x.z >= scene.domain_min.z && x.z < scene.domain_max.z &&
                           (dims == 2 || (x.y >= scene.domain_min.y && x.y < scene.domain_max.y));
       if (!inside) {
-        throw Error(spec.source, fmt::format("a {} particle at ({:.4g}, {:.4g}, {:.4g}) m lies outside "
-                                             "[domain]; enlarge the domain or move the {}",
-                                             is_fluid(p.kind[i]) ? "fluid" : "wall", x.x, x.y, x.z,
-                                             is_fluid(p.kind[i]) ? "fill" : "wall"));
+        throw Error(spec.source,
+                    fmt::format("a {} particle at ({:.4g}, {:.4g}, {:.4g}) m lies outside "
+                                "[domain]; enlarge the domain or move the {}",
+                                is_fluid(p.kind[i]) ? "fluid" : "wall", x.x, x.y, x.z,
+                                is_fluid(p.kind[i]) ? "fill" : "wall"));
       }
     }
   } else {

@@ -11,15 +11,15 @@
 namespace netsph {
 
 struct SceneSource {
-  std::string name;        ///< "fill1", or the wall's name
+  std::string name;  ///< "fill1", or the wall's name
   std::size_t particles = 0;
 };
 
 struct Scene {
   ParticleSet particles;
   FluidModel model;
-  double sound_speed = 0;     ///< c0, m/s
-  double fluid_depth = 0;     ///< deepest fill, m (used for c0 = coef sqrt(g H))
+  double sound_speed = 0;  ///< c0, m/s
+  double fluid_depth = 0;  ///< deepest fill, m (used for c0 = coef sqrt(g H))
   Vec3d domain_min{}, domain_max{};
   std::vector<SceneSource> sources;
   std::size_t removed_overlaps = 0;  ///< fluid particles dropped for sitting on another particle

@@ -39,7 +39,8 @@ void Simulation::sort_particles(bool mid_step) {
 }
 
 double Simulation::compute_dt(const RateReductions& r) {
-  diag_.dt_limits = compute_time_step(scene_.model, spec_.simulation.cfl, {r.max_acc, r.max_visc_dt});
+  diag_.dt_limits =
+      compute_time_step(scene_.model, spec_.simulation.cfl, {r.max_acc, r.max_visc_dt});
   double dt = diag_.dt_limits.dt;
   if (spec_.simulation.dt_max > 0) dt = std::min(dt, spec_.simulation.dt_max);
   if (steps_ == 0) {
@@ -47,12 +48,13 @@ double Simulation::compute_dt(const RateReductions& r) {
   }
   if (!(dt >= dt_floor_)) {
     throw SimulationUnstable(
-        "solver", fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.3g} s is below "
-                              "the floor {:.3g} s (force limit {:.3g} s, acoustic-viscous limit "
-                              "{:.3g} s); particles are colliding or the flow is too fast for c0 = "
-                              "{:.4g} m/s",
-                              time_, steps_, dt, dt_floor_, diag_.dt_limits.force,
-                              diag_.dt_limits.acoustic, scene_.sound_speed));
+        "solver",
+        fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.3g} s is below "
+                    "the floor {:.3g} s (force limit {:.3g} s, acoustic-viscous limit "
+                    "{:.3g} s); particles are colliding or the flow is too fast for c0 = "
+                    "{:.4g} m/s",
+                    time_, steps_, dt, dt_floor_, diag_.dt_limits.force, diag_.dt_limits.acoustic,
+                    scene_.sound_speed));
   }
   diag_.dt_limits.dt = dt;
   return dt;
@@ -63,10 +65,11 @@ void Simulation::fail_non_finite(std::int64_t i) const {
   const Vec3f v = p_.vel[i];
   throw SimulationUnstable(
       "solver",
-      fmt::format("non-finite state at t = {:.6g} s (step {}): particle id {} ({}) at ({:.4g}, {:.4g}, "
-                  "{:.4g}) m, velocity ({:.3g}, {:.3g}, {:.3g}) m/s, density {:.4g} kg/m^3",
-                  time_, steps_, p_.id[i], is_fluid(p_.kind[i]) ? "fluid" : "wall", x.x, x.y, x.z,
-                  v.x, v.y, v.z, p_.rho[i]));
+      fmt::format(
+          "non-finite state at t = {:.6g} s (step {}): particle id {} ({}) at ({:.4g}, {:.4g}, "
+          "{:.4g}) m, velocity ({:.3g}, {:.3g}, {:.3g}) m/s, density {:.4g} kg/m^3",
+          time_, steps_, p_.id[i], is_fluid(p_.kind[i]) ? "fluid" : "wall", x.x, x.y, x.z, v.x, v.y,
+          v.z, p_.rho[i]));
 }
 
 void Simulation::step() {
@@ -105,13 +108,12 @@ std::vector<float> Simulation::pressures() const {
 
 double Simulation::bytes_per_particle() const {
   const auto n = static_cast<double>(std::max<std::size_t>(p_.size(), 1));
-  const std::size_t bytes = p_.bytes() + view_.bytes() + start_.bytes() +
-                            acc_.capacity() * sizeof(Vec3f) + drho_.capacity() * sizeof(Real) +
-                            order_.capacity() * sizeof(std::uint32_t) + grid_.bytes() +
-                            scratch_d3_.capacity() * sizeof(Vec3d) +
-                            scratch_f3_.capacity() * sizeof(Vec3f) +
-                            scratch_f_.capacity() * sizeof(Real) + scratch_kind_.capacity() +
-                            scratch_u32_.capacity() * sizeof(std::uint32_t);
+  const std::size_t bytes =
+      p_.bytes() + view_.bytes() + start_.bytes() + acc_.capacity() * sizeof(Vec3f) +
+      drho_.capacity() * sizeof(Real) + order_.capacity() * sizeof(std::uint32_t) + grid_.bytes() +
+      scratch_d3_.capacity() * sizeof(Vec3d) + scratch_f3_.capacity() * sizeof(Vec3f) +
+      scratch_f_.capacity() * sizeof(Real) + scratch_kind_.capacity() +
+      scratch_u32_.capacity() * sizeof(std::uint32_t);
   return static_cast<double>(bytes) / n;
 }
 

@@ -21,8 +21,8 @@
 #include "netsph/case/case_spec.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
-#include "netsph/sph/time_step.hpp"
 #include "netsph/solver/scene.hpp"
+#include "netsph/sph/time_step.hpp"
 
 namespace netsph {
 
@@ -34,10 +34,10 @@ class SimulationUnstable : public Error {
 };
 
 struct StepDiagnostics {
-  TimeStepLimits dt_limits;     ///< of the last step
-  double max_speed = 0;         ///< m/s, fluid, end of step
-  std::size_t lost_total = 0;   ///< particles removed for leaving the domain, since the start
-  int resorts = 0;              ///< extra sorts because the half step exceeded the grid skin
+  TimeStepLimits dt_limits;    ///< of the last step
+  double max_speed = 0;        ///< m/s, fluid, end of step
+  std::size_t lost_total = 0;  ///< particles removed for leaving the domain, since the start
+  int resorts = 0;             ///< extra sorts because the half step exceeded the grid skin
 };
 
 class Simulation {

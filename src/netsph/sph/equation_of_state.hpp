@@ -10,10 +10,10 @@
 namespace netsph {
 
 struct TaitEos {
-  Real rho0 = 1000;   ///< reference density, kg/m^3
-  Real c0 = 0;        ///< numerical speed of sound, m/s
+  Real rho0 = 1000;  ///< reference density, kg/m^3
+  Real c0 = 0;       ///< numerical speed of sound, m/s
   Real gamma = 7;
-  Real b = 0;         ///< c0^2 rho0 / gamma, Pa
+  Real b = 0;  ///< c0^2 rho0 / gamma, Pa
   Real inv_rho0 = 0;
 
   static TaitEos make(double rho0, double c0, double gamma) {

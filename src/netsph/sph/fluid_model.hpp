@@ -16,15 +16,15 @@ struct FluidModel {
 
   KernelScale kernel;
   TaitEos eos;
-  Real support = 0;      ///< kernel support radius 2h, m
+  Real support = 0;  ///< kernel support radius 2h, m
   Real support2 = 0;
-  Real eta2 = 0;         ///< 0.01 h^2: keeps the 1/r^2 terms finite for close pairs
-  Real mass = 0;         ///< particle mass rho0 dp^dims, kg (fluid and boundary alike)
-  Real alpha = 0;        ///< artificial viscosity coefficient
-  Real nu = 0;           ///< laminar kinematic viscosity, m^2/s
-  Real delta_coef = 0;   ///< 2 delta h c0, the delta-SPH prefactor
-  Vec3f gravity{};       ///< m/s^2
-  Vec3f hydro_grad{};    ///< rho0 g / c0^2: hydrostatic density gradient (Fourtakas et al. 2019)
+  Real eta2 = 0;        ///< 0.01 h^2: keeps the 1/r^2 terms finite for close pairs
+  Real mass = 0;        ///< particle mass rho0 dp^dims, kg (fluid and boundary alike)
+  Real alpha = 0;       ///< artificial viscosity coefficient
+  Real nu = 0;          ///< laminar kinematic viscosity, m^2/s
+  Real delta_coef = 0;  ///< 2 delta h c0, the delta-SPH prefactor
+  Vec3f gravity{};      ///< m/s^2
+  Vec3f hydro_grad{};   ///< rho0 g / c0^2: hydrostatic density gradient (Fourtakas et al. 2019)
 };
 
 struct FluidModelInput {
@@ -50,7 +50,8 @@ inline FluidModel make_fluid_model(const FluidModelInput& in) {
   m.kernel_type = in.kernel;
   m.viscosity = in.viscosity;
   m.diffusion = in.diffusion;
-  m.kernel = with_kernel(in.kernel, [&](auto k) { return make_kernel_scale<decltype(k)>(in.dims, h); });
+  m.kernel =
+      with_kernel(in.kernel, [&](auto k) { return make_kernel_scale<decltype(k)>(in.dims, h); });
   m.eos = TaitEos::make(in.rho0, in.c0, in.gamma);
   m.support = static_cast<Real>(2 * h);
   m.support2 = static_cast<Real>(4 * h * h);

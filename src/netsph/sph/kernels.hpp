@@ -19,7 +19,7 @@ namespace netsph {
 
 /// Normalisation and scale of a kernel for one smoothing length and dimension.
 struct KernelScale {
-  Real h = 0;          ///< smoothing length, m
+  Real h = 0;  ///< smoothing length, m
   Real inv_h = 0;
   Real alpha_d = 0;    ///< W = alpha_d * shape(q)
   Real grad_coef = 0;  ///< (1/r) dW/dr = grad_coef * grad_shape(q)
@@ -75,7 +75,8 @@ NETSPH_HD Real kernel_value(const KernelScale& s, Real r) {
   return s.alpha_d * Kernel::shape(r * s.inv_h);
 }
 
-/// (1/r) dW/dr, so that grad_a W_ab = kernel_grad_factor * (r_a - r_b). Negative inside the support.
+/// (1/r) dW/dr, so that grad_a W_ab = kernel_grad_factor * (r_a - r_b). Negative inside the
+/// support.
 template <class Kernel>
 NETSPH_HD Real kernel_grad_factor(const KernelScale& s, Real r) {
   return s.grad_coef * Kernel::grad_shape(r * s.inv_h);

@@ -31,20 +31,20 @@ namespace netsph {
 
 /// Running sums of particle a's rates over its neighbours.
 struct RateSums {
-  Vec3f acc{};     ///< m/s^2, without gravity
-  Real drho = 0;   ///< kg/m^3/s
-  Real visc_dt = 0;///< max |h v_ab.r_ab / (r^2 + eta^2)|, 1/s
+  Vec3f acc{};       ///< m/s^2, without gravity
+  Real drho = 0;     ///< kg/m^3/s
+  Real visc_dt = 0;  ///< max |h v_ab.r_ab / (r^2 + eta^2)|, 1/s
 };
 
 /// Neighbour b as particle a sees it.
 struct Neighbour {
-  Vec3f rab;       ///< r_a - r_b, m
-  Real r2;         ///< |r_ab|^2 (> 0, < support^2)
-  Vec3f vab;       ///< v_a - v_b, m/s
+  Vec3f rab;  ///< r_a - r_b, m
+  Real r2;    ///< |r_ab|^2 (> 0, < support^2)
+  Vec3f vab;  ///< v_a - v_b, m/s
   Real rho_b;
   Real press_b;
   Real mass_b;
-  Real fluid_b;    ///< 1 when b is fluid, 0 otherwise (multiplies the delta-SPH term)
+  Real fluid_b;  ///< 1 when b is fluid, 0 otherwise (multiplies the delta-SPH term)
 };
 
 /// Fluid particle a: continuity, momentum, viscosity and density diffusion from neighbour b.

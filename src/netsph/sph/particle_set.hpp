@@ -16,14 +16,16 @@ enum class ParticleKind : std::uint8_t {
   Wall = 1,  ///< boundary particle of a wall (DBC)
 };
 
-inline bool is_fluid(ParticleKind k) { return k == ParticleKind::Fluid; }
+inline bool is_fluid(ParticleKind k) {
+  return k == ParticleKind::Fluid;
+}
 
 struct ParticleSet {
-  std::vector<Vec3d> pos;        ///< m
-  std::vector<Vec3f> vel;        ///< m/s
-  std::vector<Real> rho;         ///< kg/m^3
+  std::vector<Vec3d> pos;  ///< m
+  std::vector<Vec3f> vel;  ///< m/s
+  std::vector<Real> rho;   ///< kg/m^3
   std::vector<ParticleKind> kind;
-  std::vector<std::uint32_t> id; ///< unique, never reused
+  std::vector<std::uint32_t> id;  ///< unique, never reused
   std::uint32_t next_id = 0;
 
   std::size_t size() const { return pos.size(); }

@@ -47,6 +47,8 @@ NETSPH_HD void symplectic_correct(const Vec3d& r0, const Vec3f& v0, Real rho0, c
 
 /// DBC boundary particles keep at least the reference density so that they never attract
 /// fluid (DualSPHysics does the same).
-NETSPH_HD Real clamp_boundary_density(Real rho, Real rho_ref) { return rho < rho_ref ? rho_ref : rho; }
+NETSPH_HD Real clamp_boundary_density(Real rho, Real rho_ref) {
+  return rho < rho_ref ? rho_ref : rho;
+}
 
 }  // namespace netsph

@@ -34,8 +34,9 @@ inline RateSums fluid_sums(const FluidModel& m, const InteractionView& v, std::u
       const Real dx = xa - x[b], dy = ya - y[b], dz = za - z[b];
       const Real r2 = dx * dx + dy * dy + dz * dz;
       if (r2 < m.support2 && b != a) {
-        const Neighbour nb{{dx, dy, dz}, r2,     {vxa - vx[b], vya - vy[b], vza - vz[b]},
-                           rho[b],       press[b], m.mass, fluid[b]};
+        const Neighbour nb{{dx, dy, dz}, r2,       {vxa - vx[b], vya - vy[b], vza - vz[b]},
+                           rho[b],       press[b], m.mass,
+                           fluid[b]};
         RateSums s;
         fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb, s);
         ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
@@ -63,8 +64,9 @@ inline RateSums boundary_sums(const FluidModel& m, const InteractionView& v, std
       const Real dx = xa - v.x[b], dy = ya - v.y[b], dz = za - v.z[b];
       const Real r2 = dx * dx + dy * dy + dz * dz;
       if (r2 < m.support2 && v.fluid[b] > Real(0)) {
-        const Neighbour nb{{dx, dy, dz}, r2, {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                           v.rho[b], v.press[b], m.mass, v.fluid[b]};
+        const Neighbour nb{{dx, dy, dz}, r2,         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
+                           v.rho[b],     v.press[b], m.mass,
+                           v.fluid[b]};
         RateSums s;
         boundary_pair_rates<Kernel>(m, nb, s);
         dr += s.drho;

@@ -53,7 +53,8 @@ double formula_parity_check() {
   cudaFree(dr), cudaFree(dw), cudaFree(df);
   double worst = 0;
   for (int i = 0; i < n; ++i) {
-    const double hw = kernel_value<WendlandC2>(s, r[i]), hf = kernel_grad_factor<WendlandC2>(s, r[i]);
+    const double hw = kernel_value<WendlandC2>(s, r[i]),
+                 hf = kernel_grad_factor<WendlandC2>(s, r[i]);
     worst = std::fmax(worst, std::fabs(w[i] - hw) / (std::fabs(hw) + 1e-30));
     worst = std::fmax(worst, std::fabs(f[i] - hf) / (std::fabs(hf) + 1e-30));
   }

@@ -8,8 +8,8 @@ namespace netsph::cuda {
 
 struct RuntimeInfo {
   int devices = 0;
-  std::string name;    ///< name of device 0
-  std::string error;   ///< why no device is usable, when devices == 0
+  std::string name;   ///< name of device 0
+  std::string error;  ///< why no device is usable, when devices == 0
 };
 
 RuntimeInfo runtime_info();
