@@ -2,8 +2,8 @@
 // Uniform cell grid for the neighbour search. Particles are sorted by cell (x fastest), so
 // the candidates of a particle are a few contiguous index ranges: for every (dy, dz) offset,
 // the run of cells ix-R..ix+R is one range. Cells are support/2 (plus a skin) wide and R = 2:
-// about 60% fewer candidates than cells of the full support with R = 1, for the same cost of
-// ranges, because contiguous x-runs keep the range count at (2R+1)^(dims-1).
+// a third fewer candidates than cells of the full support with R = 1 (in 3D, 125 cells of
+// 1.05 h = 145 h^3 against 27 cells of 2h = 216 h^3), at 25 ranges per cell instead of 9.
 //
 // The skin lets one sort serve both symplectic stages: a pair that is within the support at
 // the half step was within support + 2*max_displacement when the grid was built, and the

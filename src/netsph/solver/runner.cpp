@@ -102,6 +102,7 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   };
   RunReport r;
   double particle_steps = 0;
+  bool warned_lost = false;
   outputs.maybe_write(sim, 0.0);
   try {
     while (sim.time() < end * (1 - 1e-12)) {
@@ -117,6 +118,12 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
       }
       particle_steps += static_cast<double>(sim.particles().size());
       sim.step();
+      if (sim.diagnostics().lost_total > 0 && !warned_lost) {
+        spdlog::warn("t = {:.6g} s: particles are leaving the domain and are removed (reported in "
+                     "series.csv, lost_particles); enlarge [domain] if they should stay",
+                     sim.time());
+        warned_lost = true;
+      }
       outputs.maybe_write(sim, wall());
       if (opt.progress) progress.update(sim.time(), sim.steps(), sim.particles().size());
     }
