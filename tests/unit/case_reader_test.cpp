@@ -315,6 +315,15 @@ TEST(CaseOverrides, CreateKeysTablesAndEntries) {
   EXPECT_EQ(spec.fills[1].where.str(), "--set fill.1.min=[1, 0, 0]");
 }
 
+TEST(CaseOverrides, AlternativeKeysReplaceEachOther) {
+  // full3d.toml gives sound_speed = 35: overriding the coefficient replaces it, and back.
+  const CaseSpec a = read_with({"fluid.sound_speed_coef=15"});
+  EXPECT_DOUBLE_EQ(a.fluid.sound_speed, 0);
+  EXPECT_DOUBLE_EQ(a.fluid.sound_speed_coef, 15);
+  const CaseSpec b = read_with({"fluid.sound_speed_coef=15", "fluid.sound_speed=40"});
+  EXPECT_DOUBLE_EQ(b.fluid.sound_speed, 40);
+}
+
 TEST(CaseOverrides, BadValueErrorNamesTheOption) {
   const Error e = error_with({"simulation.dp=-1"});
   EXPECT_EQ(e.where(), "--set simulation.dp=-1");

@@ -146,6 +146,20 @@ toml::node& entry_of_array(toml::array& array, const std::string& segment,
   return array[*index];
 }
 
+/// Keys that give the same quantity two ways and so exclude each other. An override of one
+/// replaces the other as well, so `--set fluid.sound_speed=30` works on a case that sets
+/// sound_speed_coef instead of failing with "cannot be combined".
+constexpr std::pair<std::string_view, std::string_view> kAlternatives[] = {
+    {"sound_speed", "sound_speed_coef"},
+};
+
+void erase_alternatives(toml::table& table, std::string_view key) {
+  for (const auto& [a, b] : kAlternatives) {
+    if (key == a) table.erase(b);
+    if (key == b) table.erase(a);
+  }
+}
+
 void apply_override(toml::table& root, const Override& o) {
   toml::table parsed = parse_value(o);
   toml::node& value = *parsed.get("v");
@@ -156,6 +170,7 @@ void apply_override(toml::table& root, const Override& o) {
     const bool last = i + 1 == o.keys.size();
     if (auto* table = current->as_table()) {
       if (last) {
+        erase_alternatives(*table, segment);
         table->insert_or_assign(segment, std::move(value));  // moving keeps the node's source
         return;
       }
