@@ -83,7 +83,7 @@ double mean_neighbours(const FluidBlock& b) {
   std::int64_t pairs = 0;
   for (const std::int64_t c : b.grid.occupied_cells()) {
     const IndexRange own = b.grid.cell_range(c);
-    std::array<IndexRange, 25> ranges;
+    NeighbourRanges ranges;
     const int nranges = b.grid.neighbour_ranges(c, ranges);
     for (std::uint32_t a = own.begin; a < own.end; ++a)
       for (int r = 0; r < nranges; ++r)

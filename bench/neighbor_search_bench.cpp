@@ -103,7 +103,7 @@ void BM_NeighbourSearch(benchmark::State& state) {
     for (std::int64_t k = 0; k < ncells; ++k) {
       const std::int64_t c = cells[static_cast<std::size_t>(k)];
       const IndexRange own = grid.cell_range(c);
-      std::array<IndexRange, 25> ranges;
+      NeighbourRanges ranges;
       const int nranges = grid.neighbour_ranges(c, ranges);
       for (std::uint32_t a = own.begin; a < own.end; ++a) {
         const float xa = x[a], ya = y[a], za = z[a];

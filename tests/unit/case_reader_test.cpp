@@ -88,7 +88,7 @@ INSTANTIATE_TEST_SUITE_P(CaseReader, BadCaseFile, ::testing::ValuesIn(bad_case_f
                          });
 
 TEST(CaseReaderBadCases, FolderHoldsEnoughCases) {
-  EXPECT_GE(bad_case_files().size(), 24u);
+  EXPECT_GE(bad_case_files().size(), 100u);
 }
 
 // ---- valid files --------------------------------------------------------------------------
@@ -122,10 +122,12 @@ TEST(CaseReader, FullFileParsesEveryKey) {
   EXPECT_DOUBLE_EQ(f.alpha, 0.01);  // default, unused by laminar
   EXPECT_EQ(f.density_diffusion, DensityDiffusion::Fourtakas);
   EXPECT_DOUBLE_EQ(f.delta, 0.2);
+  EXPECT_EQ(f.shifting, ShiftingModel::None);  // default without open boundaries
 
   EXPECT_TRUE(spec.domain.given);
   EXPECT_EQ(spec.domain.min, (Vec3d{-0.2, -0.2, -0.2}));
   EXPECT_EQ(spec.domain.max, (Vec3d{2.2, 1.2, 1.5}));
+  EXPECT_EQ(spec.domain.periodic, (std::array<bool, 3>{false, false, false}));
 
   ASSERT_EQ(spec.fills.size(), 2u);
   EXPECT_EQ(spec.fills[0].box.min, (Vec3d{0, 0, 0}));
@@ -145,11 +147,16 @@ TEST(CaseReader, FullFileParsesEveryKey) {
   EXPECT_EQ(tank.faces, (std::array<bool, 6>{true, true, true, true, true, false}));
   EXPECT_EQ(tank.layers, 4);
   EXPECT_EQ(tank.model, WallModel::Dbc);
+  EXPECT_EQ(tank.slip, WallSlip::WallVelocity);  // default (unused by DBC)
+  EXPECT_FALSE(tank.motion.moving());
   EXPECT_EQ(tank.where.line, 35);
   const WallSpec& post = spec.walls[1];
   EXPECT_EQ(post.name, "wall2");  // default: 1-based index
   EXPECT_EQ(post.faces, (std::array<bool, 6>{true, true, true, true, true, true}));
-  EXPECT_EQ(post.layers, 3);
+  EXPECT_EQ(post.layers, 4);  // default ceil(2 h_over_dp) at h_over_dp = 2
+  EXPECT_EQ(post.model, WallModel::Dbc);
+  EXPECT_TRUE(spec.inlets.empty());
+  EXPECT_TRUE(spec.outlets.empty());
 
   EXPECT_FALSE(spec.output.snapshots);
   EXPECT_DOUBLE_EQ(spec.output.snapshot_every, 0.1);
@@ -178,7 +185,11 @@ TEST(CaseReader, MinimalTwoDimensionalFileTakesDefaults) {
   EXPECT_DOUBLE_EQ(f.alpha, 0.01);
   EXPECT_EQ(f.density_diffusion, DensityDiffusion::Molteni);
   EXPECT_DOUBLE_EQ(f.delta, 0.1);
+  EXPECT_EQ(f.shifting, ShiftingModel::None);
+  EXPECT_DOUBLE_EQ(f.shifting_coefficient, 2.0);
+  EXPECT_DOUBLE_EQ(f.shifting_surface_threshold, 0);
   EXPECT_FALSE(spec.domain.given);
+  EXPECT_EQ(spec.domain.periodic, (std::array<bool, 3>{false, false, false}));
 
   ASSERT_EQ(spec.fills.size(), 1u);
   EXPECT_EQ(spec.fills[0].box.min, (Vec3d{0, 0, 0}));  // y is ignored in 2D and set to 0
@@ -188,10 +199,69 @@ TEST(CaseReader, MinimalTwoDimensionalFileTakesDefaults) {
   // 2D default: the four x/z faces.
   EXPECT_EQ(spec.walls[0].faces, (std::array<bool, 6>{true, true, false, false, true, true}));
   EXPECT_EQ(spec.walls[0].layers, 3);
+  EXPECT_EQ(spec.walls[0].model, WallModel::Mdbc);  // 3 layers cover 2h at h_over_dp = 1.5
+  EXPECT_EQ(spec.walls[0].slip, WallSlip::WallVelocity);
+  EXPECT_FALSE(spec.walls[0].motion.moving());
+  EXPECT_TRUE(spec.inlets.empty());
+  EXPECT_TRUE(spec.outlets.empty());
 
   EXPECT_TRUE(spec.output.snapshots);
   EXPECT_DOUBLE_EQ(spec.output.snapshot_every, 0);
   EXPECT_DOUBLE_EQ(spec.output.series_every, 0);
+}
+
+TEST(CaseReader, OpenChannelFileParsesEveryOpenFlowKey) {
+  const fs::path path = kCasesDir / "good" / "channel3d.toml";
+  const CaseSpec spec = read_case_file(path);
+
+  const FluidSpec& f = spec.fluid;
+  EXPECT_EQ(f.shifting, ShiftingModel::Fickian);
+  EXPECT_DOUBLE_EQ(f.shifting_coefficient, 1.5);
+  EXPECT_DOUBLE_EQ(f.shifting_surface_threshold, 2.5);
+  EXPECT_EQ(spec.domain.periodic, (std::array<bool, 3>{false, true, false}));
+
+  ASSERT_EQ(spec.walls.size(), 3u);
+  const WallSpec& bed = spec.walls[0];
+  EXPECT_EQ(bed.model, WallModel::Mdbc);  // default
+  EXPECT_EQ(bed.slip, WallSlip::FreeSlip);
+  EXPECT_EQ(bed.layers, 3);
+  EXPECT_FALSE(bed.motion.moving());
+  const WallSpec& gate = spec.walls[1];
+  EXPECT_EQ(gate.model, WallModel::Mdbc);
+  EXPECT_EQ(gate.slip, WallSlip::WallVelocity);
+  ASSERT_TRUE(gate.motion.moving());
+  EXPECT_EQ(gate.motion.times, (std::vector<double>{0, 0.5, 1}));
+  EXPECT_EQ(gate.motion.velocities, (std::vector<Vec3d>{{0, 0, 0}, {0, 0, 0.2}, {0, 0, 0}}));
+  EXPECT_NEAR(gate.motion.at(0.25).z, 0.1, kEps);
+  const WallSpec& paddle = spec.walls[2];
+  EXPECT_EQ(paddle.model, WallModel::Dbc);
+  EXPECT_EQ(paddle.layers, 1);  // the mDBC layer rule does not apply to DBC
+  EXPECT_EQ(paddle.motion.times, (std::vector<double>{0}));
+  EXPECT_EQ(paddle.motion.velocities, (std::vector<Vec3d>{{0.1, 0, 0}}));
+
+  ASSERT_EQ(spec.inlets.size(), 1u);
+  const OpenBoundarySpec& in = spec.inlets[0];
+  EXPECT_EQ(in.name, "upstream");
+  EXPECT_EQ(in.face, kXMin);
+  EXPECT_EQ(in.layers, 5);
+  EXPECT_FALSE(in.velocity.has_value());
+  EXPECT_EQ(in.profile_z, (std::vector<double>{0, 0.3}));
+  EXPECT_EQ(in.profile_u, (std::vector<double>{0.3, 0.6}));
+  EXPECT_EQ(in.density, BufferDensity::Hydrostatic);
+  ASSERT_TRUE(in.surface_z.has_value());
+  EXPECT_DOUBLE_EQ(*in.surface_z, 0.3);
+  EXPECT_EQ(in.where.str(), path.string() + ":42:1");
+
+  ASSERT_EQ(spec.outlets.size(), 1u);
+  const OpenBoundarySpec& out = spec.outlets[0];
+  EXPECT_EQ(out.name, "outlet1");  // defaults
+  EXPECT_EQ(out.face, kXMax);
+  EXPECT_EQ(out.layers, 4);
+  ASSERT_TRUE(out.velocity.has_value());
+  EXPECT_DOUBLE_EQ(*out.velocity, 0.45);
+  EXPECT_TRUE(out.profile_z.empty());
+  EXPECT_EQ(out.density, BufferDensity::Extrapolated);
+  EXPECT_FALSE(out.surface_z.has_value());
 }
 
 const std::string kMinimal = R"(
@@ -210,6 +280,156 @@ TEST(CaseReader, ModelsMayBeBareStrings) {
   EXPECT_EQ(spec.fluid.viscosity, ViscosityModel::Laminar);
   EXPECT_DOUBLE_EQ(spec.fluid.kinematic_viscosity, 1e-6);
   EXPECT_EQ(spec.fluid.density_diffusion, DensityDiffusion::None);
+}
+
+/// kMinimal with a [domain] around the fill, so that open boundaries can be added.
+const std::string kWithDomain = kMinimal + R"(
+[domain]
+min = [0, 0, 0]
+max = [2, 1, 1]
+)";
+
+TEST(CaseReader, ShiftingDefaultsToFickianWithOpenBoundaries) {
+  EXPECT_EQ(read_case_string(kWithDomain, "closed").fluid.shifting, ShiftingModel::None);
+  const std::string inlet = "[[inlet]]\nface = \"xmin\"\nvelocity = 0.5\n";
+  EXPECT_EQ(read_case_string(kWithDomain + inlet, "inlet").fluid.shifting, ShiftingModel::Fickian);
+  const std::string outlet = "[[outlet]]\nface = \"xmax\"\n";
+  const CaseSpec with_outlet = read_case_string(kWithDomain + outlet, "outlet");
+  EXPECT_EQ(with_outlet.fluid.shifting, ShiftingModel::Fickian);
+  EXPECT_DOUBLE_EQ(with_outlet.fluid.shifting_coefficient, 2.0);
+  EXPECT_DOUBLE_EQ(with_outlet.fluid.shifting_surface_threshold, 0);
+  // An explicit choice wins over the default, either way.
+  EXPECT_EQ(read_case_string(kWithDomain + "[fluid]\nshifting = \"none\"\n" + inlet, "off")
+                .fluid.shifting,
+            ShiftingModel::None);
+  EXPECT_EQ(
+      read_case_string(kWithDomain + "[fluid]\nshifting = \"fickian\"\n", "on").fluid.shifting,
+      ShiftingModel::Fickian);
+}
+
+TEST(CaseReader, ShiftingTableWithoutModelMeansFickian) {
+  const CaseSpec spec =
+      read_case_string(kMinimal + "[fluid]\nshifting = { coefficient = 10 }\n", "table");
+  EXPECT_EQ(spec.fluid.shifting, ShiftingModel::Fickian);
+  EXPECT_DOUBLE_EQ(spec.fluid.shifting_coefficient, 10);
+  EXPECT_DOUBLE_EQ(spec.fluid.shifting_surface_threshold, 0);
+}
+
+TEST(CaseReader, OpenBoundaryDefaultsAndUniformInletVelocity) {
+  const CaseSpec spec = read_case_string(kWithDomain + R"(
+[[inlet]]
+face = "xmin"
+velocity = 0.5
+
+[[inlet]]
+face = "ymin"
+velocity = 0.25
+
+[[outlet]]
+face = "xmax"
+)",
+                                         "open");
+  ASSERT_EQ(spec.inlets.size(), 2u);
+  EXPECT_EQ(spec.inlets[0].name, "inlet1");
+  EXPECT_EQ(spec.inlets[1].name, "inlet2");
+  EXPECT_EQ(spec.inlets[1].face, kYMin);
+  EXPECT_EQ(spec.inlets[0].layers, 4);
+  ASSERT_TRUE(spec.inlets[0].velocity.has_value());
+  EXPECT_DOUBLE_EQ(*spec.inlets[0].velocity, 0.5);
+  EXPECT_TRUE(spec.inlets[0].profile_z.empty());
+  EXPECT_EQ(spec.inlets[0].density, BufferDensity::Extrapolated);
+  EXPECT_FALSE(spec.inlets[0].surface_z.has_value());
+  ASSERT_EQ(spec.outlets.size(), 1u);
+  EXPECT_EQ(spec.outlets[0].name, "outlet1");
+  EXPECT_FALSE(spec.outlets[0].velocity.has_value());  // extrapolated
+}
+
+TEST(CaseReader, TwoDimensionalOpenChannel) {
+  const CaseSpec spec = read_case_string(R"(
+[simulation]
+dimensions = 2
+dp = 0.01
+h_over_dp = 2.0
+end_time = 1
+
+[domain]
+min = [0, 0, 0]
+max = [1, 0, 0.5]
+periodic = []
+
+[[fill]]
+min = [0, 0, 0]
+max = [1, 0, 0.2]
+
+[[wall]]
+min = [0, 0, 0]
+max = [1, 0, 0.5]
+faces = ["zmin"]
+layers = 4
+
+[[inlet]]
+face = "xmin"
+profile = { z = [0, 0.1, 0.2], u = [0, 0.4, 0.5] }
+
+[[outlet]]
+face = "xmax"
+layers = 4
+)",
+                                         "channel2d");
+  EXPECT_EQ(spec.domain.periodic, (std::array<bool, 3>{false, false, false}));  // [] = none
+  EXPECT_EQ(spec.walls[0].model, WallModel::Mdbc);
+  EXPECT_EQ(spec.walls[0].layers, 4);  // 4 dp = 2h at h_over_dp = 2
+  EXPECT_EQ(spec.inlets[0].profile_u, (std::vector<double>{0, 0.4, 0.5}));
+  EXPECT_EQ(spec.fluid.shifting, ShiftingModel::Fickian);
+}
+
+TEST(CaseReader, PeriodicAxesIn2DAreXAndZ) {
+  const CaseSpec spec = read_case_string(R"(
+[simulation]
+dimensions = 2
+dp = 0.02
+end_time = 1
+
+[domain]
+min = [0, 0, 0]
+max = [2, 0, 1]
+periodic = ["z", "x"]
+
+[[fill]]
+min = [0, 0, 0]
+max = [1, 0, 0.5]
+)",
+                                         "periodic2d");
+  EXPECT_EQ(spec.domain.periodic, (std::array<bool, 3>{true, false, true}));
+}
+
+TEST(CaseReader, WallVelocityIsAConstantMotion) {
+  const CaseSpec spec = read_case_string(kMinimal +
+                                             "[[wall]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n"
+                                             "velocity = [0.5, 0, -0.1]\n",
+                                         "moving");
+  const VelocityHistory& m = spec.walls[0].motion;
+  ASSERT_TRUE(m.moving());
+  EXPECT_EQ(m.times, (std::vector<double>{0}));
+  EXPECT_EQ(m.at(3.0), (Vec3d{0.5, 0, -0.1}));
+}
+
+TEST(CaseReader, MdbcLayerRuleFollowsTheSmoothingLength) {
+  const std::string sim =
+      "[simulation]\ndp = 0.02\nend_time = 1\nh_over_dp = 2\n"
+      "[[fill]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n"
+      "[[wall]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n";
+  EXPECT_EQ(read_case_string(sim + "layers = 4\n", "four").walls[0].layers, 4);
+  EXPECT_EQ(read_case_string(sim + "layers = 1\nmodel = \"dbc\"\n", "dbc").walls[0].layers, 1);
+  try {
+    read_case_string(sim + "layers = 3\n", "three");
+    FAIL() << "3 mDBC layers at h_over_dp = 2 were accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), "three:11:10");
+    EXPECT_NE(e.message().find("kernel support 2h = 0.08 m (4 dp at h_over_dp = 2)"),
+              std::string::npos)
+        << e.message();
+  }
 }
 
 TEST(CaseReader, ArraysOfInlineTablesCountAsArraysOfTables) {
@@ -341,6 +561,24 @@ TEST(CaseOverrides, BadValueErrorNamesTheOption) {
   const Error broken = error_with({"fluid.gravity=[0, 0"});
   EXPECT_EQ(broken.where(), "--set fluid.gravity=[0, 0");
   EXPECT_NE(broken.message().find("is not valid TOML"), std::string::npos) << broken.message();
+}
+
+TEST(CaseOverrides, SetNewBoundaryKeys) {
+  const CaseSpec spec = read_with({"domain.periodic=[\"y\"]", "fluid.shifting=fickian",
+                                   "wall.0.layers=4", "wall.0.model=mdbc", "wall.0.slip=free_slip",
+                                   "outlet.0.face=xmax", "outlet.0.velocity=0.2"});
+  EXPECT_EQ(spec.domain.periodic, (std::array<bool, 3>{false, true, false}));
+  EXPECT_EQ(spec.fluid.shifting, ShiftingModel::Fickian);
+  EXPECT_EQ(spec.walls[0].model, WallModel::Mdbc);
+  EXPECT_EQ(spec.walls[0].slip, WallSlip::FreeSlip);
+  ASSERT_EQ(spec.outlets.size(), 1u);
+  EXPECT_EQ(spec.outlets[0].where.str(), "--set outlet.0.face=xmax");
+  EXPECT_DOUBLE_EQ(*spec.outlets[0].velocity, 0.2);
+
+  const Error e = error_with({"inlet.0.face=xmin"});
+  EXPECT_EQ(e.where(), "--set inlet.0.face=xmin");
+  EXPECT_NE(e.message().find("inlet[1] needs an inflow velocity"), std::string::npos)
+      << e.message();
 }
 
 TEST(CaseOverrides, MalformedOptionsPointAtSet) {

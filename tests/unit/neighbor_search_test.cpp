@@ -19,7 +19,7 @@ PairSet grid_pairs(CellGrid& grid, const std::vector<Vec3d>& pos, double radius)
   std::vector<std::uint32_t> order;
   grid.sort(pos, order);
   PairSet pairs;
-  std::array<IndexRange, 25> ranges;
+  NeighbourRanges ranges;
   for (std::int64_t c = 0; c < grid.cell_count(); ++c) {
     const IndexRange own = grid.cell_range(c);
     const int nr = grid.neighbour_ranges(c, ranges);
@@ -97,7 +97,7 @@ TEST(NeighborSearch, SkinCoversDisplacedParticles) {
     moved[s] = pos[order[s]] + d;
   }
   PairSet found;
-  std::array<IndexRange, 25> ranges;
+  NeighbourRanges ranges;
   for (std::int64_t c = 0; c < grid.cell_count(); ++c) {
     const IndexRange own = grid.cell_range(c);
     const int nr = grid.neighbour_ranges(c, ranges);

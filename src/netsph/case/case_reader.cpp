@@ -1,9 +1,10 @@
-// The case-file schema: the only place that maps TOML keys to CaseSpec fields. Each table is
-// read by a TomlTableReader that rejects unknown keys first, then reads and range-checks the
-// keys in a fixed order; cross-key rules (boxes, 2D, domain) come after the keys they use.
+// The case-file schema: with case_reader_boundaries.cpp ([[wall]], [[inlet]], [[outlet]]), the
+// only place that maps TOML keys to CaseSpec fields. Each table is read by a TomlTableReader
+// that rejects unknown keys first, then reads and range-checks the keys in a fixed order;
+// cross-key rules (boxes, 2D, domain) come after the keys they use.
 // docs/case-reference.md documents every key; keep the two in step.
-#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -12,18 +13,14 @@
 
 #include "netsph/case/case_overrides.hpp"
 #include "netsph/case/case_reader.hpp"
+#include "netsph/case/case_reader_impl.hpp"
 #include "netsph/case/toml_table_reader.hpp"
 #include "netsph/core/error.hpp"
 
 namespace netsph {
-namespace {
+namespace case_detail {
 
-// ---- schema: allowed keys per table, in the order the reference documents them ----------
-
-struct TableKeys {
-  std::string_view table;
-  std::vector<std::string_view> keys;
-};
+// ---- schema -------------------------------------------------------------------------------
 
 const std::vector<TableKeys>& schema() {
   static const std::vector<TableKeys> tables = {
@@ -31,10 +28,12 @@ const std::vector<TableKeys>& schema() {
        {"name", "dimensions", "dp", "h_over_dp", "kernel", "end_time", "cfl", "dt_min", "dt_max"}},
       {"fluid",
        {"density", "sound_speed", "sound_speed_coef", "gamma", "gravity", "viscosity",
-        "density_diffusion"}},
-      {"domain", {"min", "max"}},
+        "density_diffusion", "shifting"}},
+      {"domain", {"min", "max", "periodic"}},
       {"fill", {"min", "max", "velocity", "surface_z"}},
-      {"wall", {"name", "min", "max", "faces", "layers", "model"}},
+      {"wall", {"name", "min", "max", "faces", "layers", "model", "slip", "velocity", "motion"}},
+      {"inlet", {"name", "face", "layers", "velocity", "profile", "density", "surface_z"}},
+      {"outlet", {"name", "face", "layers", "velocity", "density", "surface_z"}},
       {"output", {"snapshots", "snapshot_every", "series_every"}},
   };
   return tables;
@@ -48,13 +47,11 @@ const std::vector<std::string_view>& keys_of(std::string_view table) {
   return none;
 }
 
-/// "[fluid]" or "[[fill]]": how a top-level table is written.
 std::string header_of(std::string_view table) {
-  const bool is_array = table == "fill" || table == "wall";
+  const bool is_array = table == "fill" || table == "wall" || table == "inlet" || table == "outlet";
   return is_array ? fmt::format("[[{}]]", table) : fmt::format("[{}]", table);
 }
 
-/// For a key that is close to nothing in its own table: maybe it was put in the wrong one.
 std::string home_hint(std::string_view key) {
   for (const auto& t : schema()) {
     for (const std::string_view k : t.keys) {
@@ -64,8 +61,26 @@ std::string home_hint(std::string_view key) {
   return {};
 }
 
+void reject_foreign_parameter(const TomlTableReader& r, std::string_view key,
+                              std::string_view model, std::string_view owners,
+                              std::string_view own_keys) {
+  if (const toml::node* node = r.find(key)) {
+    r.fail_value(key, *node,
+                 fmt::format("does not apply to model \"{}\" ({} is a parameter of {}); "
+                             "allowed with \"{}\": {}",
+                             model, key, owners, model, own_keys));
+  }
+}
+
+std::string format_derived(double v) {
+  return fmt::format("{:.6g}", v);
+}
+
+namespace {
+
 const std::vector<std::string_view> kViscosityKeys = {"model", "alpha", "kinematic_viscosity"};
 const std::vector<std::string_view> kDiffusionKeys = {"model", "delta"};
+const std::vector<std::string_view> kShiftingKeys = {"model", "coefficient", "surface_threshold"};
 
 constexpr std::array kKernels = {Choice<KernelType>{"wendland", KernelType::Wendland},
                                  Choice<KernelType>{"cubic_spline", KernelType::CubicSpline}};
@@ -76,66 +91,46 @@ constexpr std::array kDiffusionModels = {
     Choice<DensityDiffusion>{"none", DensityDiffusion::None},
     Choice<DensityDiffusion>{"molteni", DensityDiffusion::Molteni},
     Choice<DensityDiffusion>{"fourtakas", DensityDiffusion::Fourtakas}};
-constexpr std::array kWallModels = {Choice<WallModel>{"dbc", WallModel::Dbc}};
-constexpr std::array<std::string_view, 6> kFaceNames = {"xmin", "xmax", "ymin",
-                                                        "ymax", "zmin", "zmax"};
+constexpr std::array kShiftingModels = {Choice<ShiftingModel>{"none", ShiftingModel::None},
+                                        Choice<ShiftingModel>{"fickian", ShiftingModel::Fickian}};
 
-constexpr std::string_view kPlaneReason = "2D runs in the x-z plane (z up)";
+}  // namespace
 
 // ---- the reader ---------------------------------------------------------------------------
 
-class CaseReader {
- public:
-  CaseReader(const toml::table& root, const TomlSource& source) : root_(root), source_(source) {}
-
-  CaseSpec read(const std::string& default_name) {
-    spec_.source = source_.name();
-    check_top_level();
-    read_simulation(default_name);
-    read_fluid();
-    read_domain();
-    read_fills();
-    read_walls();
-    read_output();
-    return std::move(spec_);
+CaseSpec CaseReader::read(const std::string& default_name) {
+  spec_.source = source_.name();
+  check_top_level();
+  read_simulation(default_name);
+  read_fluid();
+  read_domain();
+  read_fills();
+  read_walls();
+  read_open_boundaries(true);
+  read_open_boundaries(false);
+  // Shifting keeps the particle distribution regular where open boundaries add and remove
+  // particles; a closed case does without unless asked.
+  if (!shifting_given_ && (!spec_.inlets.empty() || !spec_.outlets.empty())) {
+    spec_.fluid.shifting = ShiftingModel::Fickian;
   }
+  read_output();
+  return std::move(spec_);
+}
 
- private:
-  bool is_2d() const { return spec_.simulation.dimensions == 2; }
-  /// Axes that carry geometry: x, z in 2D; x, y, z in 3D.
-  std::vector<int> used_axes() const { return is_2d() ? std::vector{0, 2} : std::vector{0, 1, 2}; }
+int CaseReader::support_layers() const {
+  // The tolerance keeps h_over_dp = 1.5 at 3 layers despite rounding.
+  return static_cast<int>(std::ceil(2 * spec_.simulation.h_over_dp - 1e-9));
+}
 
-  [[noreturn]] void fail_root(const std::string& message) const {
-    throw Error(source_.where(root_.source()), message);
-  }
+std::string CaseReader::support_text() const {
+  const SimulationSpec& s = spec_.simulation;
+  return fmt::format("2h = {} m ({} dp at h_over_dp = {})", format_derived(2 * s.h_over_dp * s.dp),
+                     format_derived(2 * s.h_over_dp), format_number(s.h_over_dp));
+}
 
-  void check_top_level() const;
-  const toml::table* find_table(std::string_view name) const;
-  std::vector<const toml::table*> find_array_of_tables(std::string_view name) const;
-
-  void read_simulation(const std::string& default_name);
-  void read_fluid();
-  void read_viscosity(const TomlTableReader& fluid);
-  void read_density_diffusion(const TomlTableReader& fluid);
-  void read_domain();
-  void read_fills();
-  FillSpec read_fill(const toml::table& table, int number) const;
-  void check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const;
-  void read_walls();
-  WallSpec read_wall(const toml::table& table, int number) const;
-  std::array<bool, 6> read_faces(const TomlTableReader& r) const;
-  void read_output();
-
-  BoxSpec read_box(const TomlTableReader& r, std::string_view what) const;
-  Vec3d read_position(const TomlTableReader& r, std::string_view key,
-                      std::string_view meaning) const;
-  Vec3d read_in_plane_vector(const TomlTableReader& r, std::string_view key, const NumberRule& rule,
-                             Vec3d fallback) const;
-
-  const toml::table& root_;
-  const TomlSource& source_;
-  CaseSpec spec_;
-};
+void CaseReader::fail_root(const std::string& message) const {
+  throw Error(source_.where(root_.source()), message);
+}
 
 void CaseReader::check_top_level() const {
   std::vector<std::string_view> allowed;
@@ -239,19 +234,7 @@ void CaseReader::read_fluid() {
   f.gravity = read_in_plane_vector(r, "gravity", NumberRule::any("m/s^2"), f.gravity);
   read_viscosity(r);
   read_density_diffusion(r);
-}
-
-/// A parameter given for a model it does not belong to is an error rather than silently
-/// ignored: the user believes it has an effect.
-void reject_foreign_parameter(const TomlTableReader& r, std::string_view key,
-                              std::string_view model, std::string_view owners,
-                              std::string_view own_keys) {
-  if (const toml::node* node = r.find(key)) {
-    r.fail_value(key, *node,
-                 fmt::format("does not apply to model \"{}\" ({} is a parameter of {}); "
-                             "allowed with \"{}\": {}",
-                             model, key, owners, model, own_keys));
-  }
+  read_shifting(r);
 }
 
 void CaseReader::read_viscosity(const TomlTableReader& fluid) {
@@ -306,6 +289,37 @@ void CaseReader::read_density_diffusion(const TomlTableReader& fluid) {
   }
 }
 
+void CaseReader::read_shifting(const TomlTableReader& fluid) {
+  const toml::node* node = fluid.find("shifting");
+  if (!node) return;  // the default depends on the open boundaries: see read()
+  shifting_given_ = true;
+  FluidSpec& f = spec_.fluid;
+  if (node->is_string()) {
+    f.shifting = fluid.to_choice("shifting", *node, kShiftingModels);
+    return;
+  }
+  const auto* table = node->as_table();
+  if (!table) {
+    fluid.fail_value("shifting", *node,
+                     fmt::format("must be \"none\", \"fickian\" or a table such as "
+                                 "{{ model = \"fickian\", coefficient = 2.0 }}, not {}",
+                                 type_name(*node)));
+  }
+  TomlTableReader r(*table, "fluid.shifting", "fluid.shifting", kShiftingKeys, source_);
+  // Parameters only exist for "fickian", so a table without a model means it.
+  f.shifting = r.choice("model", kShiftingModels, ShiftingModel::Fickian);
+  if (f.shifting == ShiftingModel::None) {
+    for (const std::string_view key : {"coefficient", "surface_threshold"}) {
+      reject_foreign_parameter(r, key, "none", "\"fickian\"", "model");
+    }
+  } else {
+    f.shifting_coefficient =
+        r.number("coefficient", NumberRule::left_open(0, 10, ""), f.shifting_coefficient);
+    f.shifting_surface_threshold =
+        r.number("surface_threshold", NumberRule::closed(0, 3, ""), f.shifting_surface_threshold);
+  }
+}
+
 // ---- geometry helpers ---------------------------------------------------------------------
 
 Vec3d CaseReader::read_position(const TomlTableReader& r, std::string_view key,
@@ -322,11 +336,16 @@ Vec3d CaseReader::read_in_plane_vector(const TomlTableReader& r, std::string_vie
   const toml::node* node = r.find(key);
   if (!node) return fallback;
   const Vec3d v = r.to_vec3(key, *node, rule);
-  if (is_2d() && v.y != 0) {
-    r.fail_value(key, *node, fmt::format("y must be 0 because {}", kPlaneReason),
-                 node->as_array()->get(1));
-  }
+  check_in_plane(r, key, *node, v);
   return v;
+}
+
+void CaseReader::check_in_plane(const TomlTableReader& r, std::string_view key,
+                                const toml::node& node, const Vec3d& v) const {
+  if (is_2d() && v.y != 0) {
+    r.fail_value(key, node, fmt::format("y must be 0 because {}", kPlaneReason),
+                 node.as_array()->get(1));
+  }
 }
 
 BoxSpec CaseReader::read_box(const TomlTableReader& r, std::string_view what) const {
@@ -351,7 +370,25 @@ void CaseReader::read_domain() {
   if (!table) return;
   TomlTableReader r(*table, "domain", "[domain]", keys_of("domain"), source_, home_hint);
   const BoxSpec box = read_box(r, "the domain");
-  spec_.domain = {true, box.min, box.max};
+  spec_.domain = {true, box.min, box.max, read_periodic(r)};
+}
+
+std::array<bool, 3> CaseReader::read_periodic(const TomlTableReader& r) const {
+  std::array<bool, 3> periodic{};
+  const toml::node* node = r.find("periodic");
+  if (!node) return periodic;
+  // min and max are required keys of [domain], so a periodic axis always has its extent.
+  const WordListRule rule{
+      .noun = "axis",
+      .known = {"x", "y", "z"},
+      .allowed = is_2d() ? std::vector<std::string_view>{"x", "z"}
+                         : std::vector<std::string_view>{"x", "y", "z"},
+      .not_allowed_reason = kNotIn2D,
+      .example = "[\"x\"] or [\"x\", \"y\"]",
+      .allow_empty = true,
+  };
+  for (const std::size_t axis : r.to_word_list("periodic", *node, rule)) periodic[axis] = true;
+  return periodic;
 }
 
 // ---- [[fill]] -----------------------------------------------------------------------------
@@ -403,93 +440,6 @@ void CaseReader::check_fill_in_domain(const TomlTableReader& r, const BoxSpec& b
   }
 }
 
-// ---- [[wall]] -----------------------------------------------------------------------------
-
-void CaseReader::read_walls() {
-  const std::vector<const toml::table*> tables = find_array_of_tables("wall");
-  for (std::size_t i = 0; i < tables.size(); ++i) {
-    WallSpec wall = read_wall(*tables[i], static_cast<int>(i) + 1);
-    for (std::size_t j = 0; j < spec_.walls.size(); ++j) {
-      if (spec_.walls[j].name != wall.name) continue;
-      const std::string message = fmt::format(
-          "wall name \"{}\" is used twice: by wall[{}] ({}) and wall[{}]; names "
-          "must be unique",
-          wall.name, j + 1, spec_.walls[j].where.str(), i + 1);
-      const toml::node* name_node = tables[i]->get("name");
-      throw Error(source_.where(name_node ? name_node->source() : tables[i]->source()), message);
-    }
-    spec_.walls.push_back(std::move(wall));
-  }
-}
-
-WallSpec CaseReader::read_wall(const toml::table& table, int number) const {
-  const std::string name = fmt::format("wall[{}]", number);
-  TomlTableReader r(table, name, name, keys_of("wall"), source_, home_hint);
-  WallSpec wall;
-  wall.where = r.location();
-  wall.name = r.string("name", fmt::format("wall{}", number));
-  if (wall.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
-  wall.box = read_box(r, "the wall's fluid side");
-  wall.faces = read_faces(r);
-  wall.layers = static_cast<int>(r.integer("layers", IntRule{1, 10}, wall.layers));
-  wall.model = r.choice("model", kWallModels, wall.model);
-  return wall;
-}
-
-std::array<bool, 6> CaseReader::read_faces(const TomlTableReader& r) const {
-  std::array<bool, 6> faces{};
-  const std::vector<std::string_view> allowed =
-      is_2d() ? std::vector<std::string_view>{"xmin", "xmax", "zmin", "zmax"}
-              : std::vector<std::string_view>(kFaceNames.begin(), kFaceNames.end());
-  const toml::node* node = r.find("faces");
-  if (!node) {
-    for (const std::string_view face : allowed) {
-      faces[std::find(kFaceNames.begin(), kFaceNames.end(), face) - kFaceNames.begin()] = true;
-    }
-    return faces;
-  }
-  const auto* array = node->as_array();
-  const std::string example = "e.g. [\"xmin\", \"xmax\", \"zmin\"]";
-  if (!array) {
-    r.fail_value(
-        "faces", *node,
-        fmt::format("must be an array of face names ({}), not {}", example, type_name(*node)));
-  }
-  if (array->empty()) {
-    r.fail_value("faces", *node,
-                 fmt::format("must name at least one face; allowed: {}", join(allowed)));
-  }
-  for (const toml::node& element : *array) {
-    const auto* s = element.as_string();
-    if (!s) {
-      r.fail_value(
-          "faces", *node,
-          fmt::format("face names must be strings ({}), not {}", example, type_name(element)),
-          &element);
-    }
-    const std::string& face = s->get();
-    const auto it = std::find(kFaceNames.begin(), kFaceNames.end(), face);
-    if (it == kFaceNames.end()) {
-      r.fail_value("faces", *node,
-                   fmt::format("unknown face \"{}\"{}; allowed: {}", face,
-                               did_you_mean(face, allowed), join(allowed)),
-                   &element);
-    }
-    if (std::find(allowed.begin(), allowed.end(), face) == allowed.end()) {
-      r.fail_value("faces", *node,
-                   fmt::format("face \"{}\" is not allowed in 2D because {}; allowed: {}", face,
-                               kPlaneReason, join(allowed)),
-                   &element);
-    }
-    bool& flag = faces[static_cast<std::size_t>(it - kFaceNames.begin())];
-    if (flag) {
-      r.fail_value("faces", *node, fmt::format("face \"{}\" is listed twice", face), &element);
-    }
-    flag = true;
-  }
-  return faces;
-}
-
 // ---- [output] -----------------------------------------------------------------------------
 
 void CaseReader::read_output() {
@@ -507,7 +457,11 @@ void CaseReader::read_output() {
   o.series_every = r.number("series_every", NumberRule::non_negative("s"), o.series_every);
 }
 
+}  // namespace case_detail
+
 // ---- entry points -------------------------------------------------------------------------
+
+namespace {
 
 toml::table parse_toml(std::string_view text, const std::string& source_name) {
   try {
@@ -523,7 +477,7 @@ CaseSpec read_case(std::string_view text, const std::string& source_name,
   toml::table root = parse_toml(text, source_name);
   apply_overrides(root, overrides);
   const TomlSource source(source_name);
-  return CaseReader(root, source).read(default_name);
+  return case_detail::CaseReader(root, source).read(default_name);
 }
 
 std::string read_file_text(const std::filesystem::path& path) {

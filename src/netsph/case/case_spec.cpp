@@ -11,3 +11,19 @@ std::string SourceLocation::str() const {
 }
 
 }  // namespace netsph
+
+namespace netsph {
+
+Vec3d VelocityHistory::at(double t) const {
+  if (velocities.empty()) return {};
+  if (t <= times.front()) return velocities.front();
+  for (std::size_t k = 1; k < times.size(); ++k) {
+    if (t <= times[k]) {
+      const double w = (t - times[k - 1]) / (times[k] - times[k - 1]);
+      return velocities[k - 1] * (1 - w) + velocities[k] * w;
+    }
+  }
+  return velocities.back();
+}
+
+}  // namespace netsph

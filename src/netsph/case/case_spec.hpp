@@ -46,12 +46,22 @@ struct FluidSpec {
   double kinematic_viscosity = 1e-6;  ///< nu, m^2/s, for the laminar model
   DensityDiffusion density_diffusion = DensityDiffusion::Molteni;
   double delta = 0.1;  ///< delta-SPH coefficient
+  /// fluid.shifting = { model, coefficient, surface_threshold }. Default: "fickian" when the
+  /// case has an [[inlet]] or [[outlet]], "none" otherwise.
+  ShiftingModel shifting = ShiftingModel::None;
+  double shifting_coefficient = 2.0;  ///< A in dr = -A h |v| dt grad(C); (0, 10]
+  /// Free-surface threshold on div(r): no shifting below it, damped above it. 0: 1.85 in 2D,
+  /// 2.75 in 3D (sph/shifting.hpp).
+  double shifting_surface_threshold = 0;
 };
 
-/// [domain]. Particles that leave it are removed (and counted in the warnings).
+/// [domain]. Particles that leave it are removed (and counted in the warnings), except along
+/// periodic axes, where they re-enter at the opposite face.
 struct DomainSpec {
   bool given = false;  ///< false: bounding box of all particles plus a margin of 2h
   Vec3d min{}, max{};
+  std::array<bool, 3>
+      periodic{};  ///< periodic = ["x", "y", "z"] (subset; y not in 2D); needs min/max
 };
 
 struct BoxSpec {
@@ -70,13 +80,47 @@ struct FillSpec {
 /// Face order used by WallSpec::faces.
 enum Face : int { kXMin = 0, kXMax = 1, kYMin = 2, kYMax = 3, kZMin = 4, kZMax = 5 };
 
+/// Prescribed velocity over time, piecewise linear between (time, velocity) points, held
+/// constant before the first and after the last. One point = a constant velocity.
+struct VelocityHistory {
+  std::vector<double> times;      ///< s, strictly increasing
+  std::vector<Vec3d> velocities;  ///< m/s, one per time
+  bool moving() const { return !velocities.empty(); }
+  Vec3d at(double t) const;  ///< zero when empty
+};
+
 /// [[wall]]: layers of boundary particles outside the chosen faces of a box.
 struct WallSpec {
   std::string name;             ///< default "wall<N>"
   BoxSpec box;                  ///< the fluid side of the wall (the inner surface of a tank)
   std::array<bool, 6> faces{};  ///< which faces of the box carry wall particles
-  int layers = 3;               ///< particle layers; default covers the kernel support
-  WallModel model = WallModel::Dbc;
+  int layers = 3;  ///< particle layers; default ceil(2 h / dp), enough to cover the kernel support
+  WallModel model = WallModel::Mdbc;
+  /// mDBC only. Default: the wall's own velocity (DualSPHysics' published mDBC); no_slip is
+  /// meant for laminar viscosity (with artificial viscosity, which acts only on approaching
+  /// pairs, the mirrored velocities drag near-wall fluid backwards: docs/VALIDATION.md).
+  WallSlip slip = WallSlip::WallVelocity;
+  /// velocity = [u, v, w] (constant) or motion = { times = [...], velocities = [[...], ...] }.
+  VelocityHistory motion;
+  SourceLocation where;
+};
+
+/// [[inlet]] and [[outlet]]: open boundaries after Tafuni et al. (2018). A buffer of `layers`
+/// particle layers lies inside the domain along one domain face; the fill particles that start
+/// there become buffer particles.
+struct OpenBoundarySpec {
+  std::string name;   ///< default "inlet<N>" / "outlet<N>"
+  Face face = kXMin;  ///< a face of [domain] (required)
+  int layers = 4;     ///< buffer width in particle layers (default max(4, ceil(2h/dp))); >= 2h
+  /// Inlet: imposed normal velocity into the domain, uniform (m/s) unless a profile is given.
+  /// Outlet: unset = extrapolated from the fluid; set = imposed (outwards).
+  std::optional<double> velocity;
+  /// Inlet profile over z: piecewise linear through (z, u) points (m, m/s); replaces velocity.
+  std::vector<double> profile_z, profile_u;
+  BufferDensity density = BufferDensity::Extrapolated;
+  /// Free-surface height: hydrostatic density below it; the inlet creates no particles above
+  /// it. Default: the highest fill surface.
+  std::optional<double> surface_z;
   SourceLocation where;
 };
 
@@ -94,6 +138,8 @@ struct CaseSpec {
   DomainSpec domain;
   std::vector<FillSpec> fills;
   std::vector<WallSpec> walls;
+  std::vector<OpenBoundarySpec> inlets;
+  std::vector<OpenBoundarySpec> outlets;
   OutputSpec output;
 };
 

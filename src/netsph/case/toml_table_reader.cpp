@@ -45,12 +45,18 @@ std::string format_array(const toml::array& array) {
 
 std::string format_table(const toml::table& table) {
   if (table.empty()) return "{}";
+  // toml++ iterates keys alphabetically; show them as the user wrote them.
+  std::vector<std::pair<const toml::key*, const toml::node*>> entries;
+  for (const auto& [key, value] : table) entries.emplace_back(&key, &value);
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    const auto& pa = key_region(*a.first, *a.second).begin;
+    const auto& pb = key_region(*b.first, *b.second).begin;
+    return std::pair(pa.line, pa.column) < std::pair(pb.line, pb.column);
+  });
   std::string out = "{ ";
-  bool first = true;
-  for (const auto& [key, value] : table) {
-    if (!first) out += ", ";
-    first = false;
-    out += std::string(key.str()) + " = " + format_unlimited(value);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (i > 0) out += ", ";
+    out += std::string(entries[i].first->str()) + " = " + format_unlimited(*entries[i].second);
   }
   return out + " }";
 }
@@ -151,7 +157,9 @@ std::string_view type_name(const toml::node& node) {
 std::string closest_match(std::string_view word, const std::vector<std::string_view>& candidates) {
   const std::string w = lower(word);
   // Short words tolerate fewer edits: "dx" -> "dp" is plausible, "ab" -> "dp" is not.
-  const std::size_t tolerance = w.size() <= 4 ? 1 : (w.size() <= 8 ? 2 : 3);
+  // A suggestion never replaces the whole word: "w" is not a typo of "x".
+  const std::size_t tolerance =
+      std::min(w.size() <= 4 ? std::size_t{1} : (w.size() <= 8 ? 2 : 3), w.size() - 1);
   std::string best;
   std::size_t best_distance = tolerance + 1;
   for (const std::string_view c : candidates) {
@@ -214,10 +222,11 @@ bool NumberRule::accepts(double v) const {
 }
 
 std::string NumberRule::describe() const {
-  std::string range;
   if (std::isinf(lo) && std::isinf(hi)) {
-    range = "a finite number";
-  } else if (std::isinf(hi)) {
+    return unit.empty() ? "a finite number" : "a finite number in " + std::string(unit);
+  }
+  std::string range;
+  if (std::isinf(hi)) {
     range = fmt::format("{} {}", lo_open ? ">" : ">=", format_number(lo));
   } else if (std::isinf(lo)) {
     range = fmt::format("{} {}", hi_open ? "<" : "<=", format_number(hi));
@@ -292,8 +301,9 @@ double TomlTableReader::to_number(std::string_view key, const toml::node& node,
   } else if (const auto* f = node.as_floating_point()) {
     v = f->get();
   } else {
-    fail_value(key, node,
-               fmt::format("must be a number {}, not {}", rule.describe(), type_name(node)));
+    const std::string range = rule.describe();  // "a finite number" needs no "a number"
+    const std::string expected = range.starts_with("a ") ? range : "a number " + range;
+    fail_value(key, node, fmt::format("must be {}, not {}", expected, type_name(node)));
   }
   if (!rule.accepts(v)) fail_value(key, node, "must be " + rule.describe());
   return v;
@@ -367,6 +377,89 @@ std::string TomlTableReader::to_word(std::string_view key, const toml::node& nod
     fail_value(key, node, "must be " + options + hint);
   }
   return word;
+}
+
+std::vector<double> TomlTableReader::to_number_array(std::string_view key, const toml::node& node,
+                                                     const NumberRule& rule,
+                                                     std::size_t min_size) const {
+  const auto* array = node.as_array();
+  if (!array) {
+    fail_value(
+        key, node,
+        fmt::format("must be an array of numbers {}, not {}", rule.describe(), type_name(node)));
+  }
+  if (array->size() < min_size) {
+    fail_value(key, node,
+               fmt::format("must have at least {} element{}, got {}", min_size,
+                           min_size == 1 ? "" : "s", array->size()));
+  }
+  std::vector<double> values;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = (*array)[i];
+    double v = 0;
+    if (const auto* integer_value = element.as_integer()) {
+      v = static_cast<double>(integer_value->get());
+    } else if (const auto* float_value = element.as_floating_point()) {
+      v = float_value->get();
+    } else {
+      fail_value(key, node,
+                 fmt::format("element {} must be a number, not {}", i + 1, type_name(element)),
+                 &element);
+    }
+    if (!rule.accepts(v)) {
+      fail_value(
+          key, node,
+          fmt::format("element {} = {} must be {}", i + 1, format_value(element), rule.describe()),
+          &element);
+    }
+    values.push_back(v);
+  }
+  return values;
+}
+
+std::vector<std::size_t> TomlTableReader::to_word_list(std::string_view key, const toml::node& node,
+                                                       const WordListRule& rule) const {
+  const auto* array = node.as_array();
+  if (!array) {
+    fail_value(key, node,
+               fmt::format("must be an array of {} names (e.g. {}), not {}", rule.noun,
+                           rule.example, type_name(node)));
+  }
+  if (array->empty() && !rule.allow_empty) {
+    fail_value(
+        key, node,
+        fmt::format("must name at least one {}; allowed: {}", rule.noun, join(rule.allowed)));
+  }
+  std::vector<std::size_t> indices;
+  for (const toml::node& element : *array) {
+    const auto* s = element.as_string();
+    if (!s) {
+      fail_value(key, node,
+                 fmt::format("{} names must be strings (e.g. {}), not {}", rule.noun, rule.example,
+                             type_name(element)),
+                 &element);
+    }
+    const std::string& word = s->get();
+    const auto it = std::find(rule.known.begin(), rule.known.end(), word);
+    if (it == rule.known.end()) {
+      fail_value(key, node,
+                 fmt::format("unknown {} \"{}\"{}; allowed: {}", rule.noun, word,
+                             did_you_mean(word, rule.allowed), join(rule.allowed)),
+                 &element);
+    }
+    if (std::find(rule.allowed.begin(), rule.allowed.end(), word) == rule.allowed.end()) {
+      fail_value(key, node,
+                 fmt::format("{} \"{}\" is not allowed {}; allowed: {}", rule.noun, word,
+                             rule.not_allowed_reason, join(rule.allowed)),
+                 &element);
+    }
+    const auto index = static_cast<std::size_t>(it - rule.known.begin());
+    if (std::find(indices.begin(), indices.end(), index) != indices.end()) {
+      fail_value(key, node, fmt::format("{} \"{}\" is listed twice", rule.noun, word), &element);
+    }
+    indices.push_back(index);
+  }
+  return indices;
 }
 
 Vec3d TomlTableReader::to_vec3(std::string_view key, const toml::node& node,

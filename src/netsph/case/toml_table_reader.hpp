@@ -64,7 +64,7 @@ struct NumberRule {
   }
 
   bool accepts(double v) const;
-  /// "> 0 m", "in [1, 100000] kg/m^3", "a finite number"
+  /// "> 0 m", "in [1, 100000] kg/m^3", "a finite number in m"
   std::string describe() const;
 };
 
@@ -81,6 +81,17 @@ template <typename E>
 struct Choice {
   std::string_view name;
   E value;
+};
+
+/// An array of distinct words from a fixed set: wall faces, periodic axes.
+struct WordListRule {
+  std::string_view noun;                  ///< "face", "axis"
+  std::vector<std::string_view> known;    ///< every word of the set
+  std::vector<std::string_view> allowed;  ///< the words allowed here: a subset of `known`
+  /// Why a known word may not be allowed: "in 2D because ...".
+  std::string_view not_allowed_reason;
+  std::string_view example;  ///< "[\"xmin\", \"xmax\", \"zmin\"]"
+  bool allow_empty = false;
 };
 
 /// Optional extra hint for an unknown key that is not close to any allowed key, e.g. "it
@@ -118,6 +129,14 @@ class TomlTableReader {
   bool boolean(std::string_view key, bool fallback) const;
   std::string string(std::string_view key, std::string fallback) const;
   std::string to_string(std::string_view key, const toml::node& node) const;
+
+  /// An array of at least `min_size` numbers, each within `rule`. Messages number the
+  /// elements from 1 and point at the bad one.
+  std::vector<double> to_number_array(std::string_view key, const toml::node& node,
+                                      const NumberRule& rule, std::size_t min_size) const;
+  /// The words of an array of distinct words, as indices into `rule.known`, in file order.
+  std::vector<std::size_t> to_word_list(std::string_view key, const toml::node& node,
+                                        const WordListRule& rule) const;
 
   /// An array of exactly three numbers.
   Vec3d vec3(std::string_view key, const NumberRule& rule, Vec3d fallback) const;

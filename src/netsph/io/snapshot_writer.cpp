@@ -218,6 +218,15 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path dir, std::string base)
   std::error_code ec;
   fs::create_directories(snapshots, ec);
   if (ec) throw Error(snapshots.string(), "cannot create the folder: " + ec.message());
+  // A new run into the same folder replaces the previous run's snapshots: stale files with
+  // higher numbers would otherwise sit next to the new ones and mislead anyone globbing them.
+  const std::string prefix = base_ + "_";
+  for (const auto& entry : fs::directory_iterator(snapshots, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.starts_with(prefix) && name.ends_with(".h5")) {
+      fs::remove(entry.path(), ec);
+    }
+  }
 }
 
 std::filesystem::path SnapshotWriter::xdmf_path() const {

@@ -29,7 +29,8 @@ struct SnapshotFields {
 
 class SnapshotWriter {
  public:
-  /// Creates <dir>/snapshots/ if needed. `base` names the XDMF file and the snapshot files.
+  /// Creates <dir>/snapshots/ if needed and removes <base>_*.h5 files a previous run left
+  /// there. `base` names the XDMF file and the snapshot files.
   explicit SnapshotWriter(std::filesystem::path dir, std::string base = "particles");
 
   /// Writes <dir>/snapshots/<base>_NNNNNN.h5 (NNNNNN = snapshot index from 0) and rewrites

@@ -9,6 +9,11 @@
 // the half step was within support + 2*max_displacement when the grid was built, and the
 // search covers R * cell_size >= support * (1 + skin). The solver checks the displacement and
 // rebuilds when it exceeds the skin (docs/ARCHITECTURE.md, "Neighbour search").
+//
+// Periodic axes: the cell size is stretched so that the period holds a whole number of cells
+// (at least 2R + 1, so that no neighbour is seen twice), and ranges that cross the period end
+// are split, each carrying the shift (+-L) to add to the neighbours' positions. Positions must
+// lie inside the period when sorting (the solver wraps them first).
 #include <array>
 #include <cstdint>
 #include <span>
@@ -24,16 +29,37 @@ struct IndexRange {
   std::uint32_t end;
 };
 
+/// Candidate neighbours: a range of sorted indices and the periodic shift to add to their
+/// positions (zero unless the range lies across a periodic boundary).
+struct NeighbourRange {
+  std::uint32_t begin;
+  std::uint32_t end;
+  Vec3f shift;
+};
+
+/// Enough for 3D: (2R+1)^2 rows of cells, each split in two at most by a periodic x boundary.
+using NeighbourRanges = std::array<NeighbourRange, 50>;
+
 class CellGrid {
  public:
   static constexpr int kSearchCells = 2;  ///< R: cells searched on each side
 
   /// Lays the grid over the box [lo, hi] (the domain). `support` is the kernel radius;
   /// `skin` the relative margin (cell = support (1 + skin) / R). dims = 2 uses one y cell.
-  void configure(const Vec3d& lo, const Vec3d& hi, double support, double skin, int dims);
+  /// Throws netsph::Error if a periodic axis is shorter than 2R + 1 cells.
+  void configure(const Vec3d& lo, const Vec3d& hi, double support, double skin, int dims,
+                 std::array<bool, 3> periodic = {});
 
-  /// Cell index of a position, or -1 outside the grid.
+  /// Cell index of a position, or -1 outside the grid (on a periodic axis a position a
+  /// round-off outside the period is taken as inside).
   std::int64_t cell_of(const Vec3d& p) const;
+
+  /// Moves positions on periodic axes into [lo, hi) by whole periods; returns how many moved.
+  std::size_t wrap(std::span<Vec3d> pos) const;
+  /// p moved into [lo, hi) along the periodic axes.
+  Vec3d wrapped(const Vec3d& p) const;
+  /// The shift wrap() would apply to p (zero when p is inside on every periodic axis).
+  Vec3d wrap_shift(const Vec3d& p) const;
 
   /// Counting sort by cell. Fills `order` (sorted slot -> old index; particles outside the
   /// grid are left out) and the cell ranges. Deterministic and stable for any thread count.
@@ -42,8 +68,8 @@ class CellGrid {
   /// Largest displacement allowed since the last sort before a rebuild is needed, m.
   double max_displacement() const { return max_displacement_; }
 
-  /// The candidate ranges of cell `c`, at most (2R+1)^2 in 3D; returns how many were written.
-  int neighbour_ranges(std::int64_t c, std::array<IndexRange, 25>& out) const;
+  /// The candidate ranges of cell `c`; returns how many were written.
+  int neighbour_ranges(std::int64_t c, NeighbourRanges& out) const;
 
   std::int64_t cell_count() const { return static_cast<std::int64_t>(n_[0]) * n_[1] * n_[2]; }
   /// The cells holding at least one particle after the last sort, in increasing order: loops
@@ -51,8 +77,10 @@ class CellGrid {
   const std::vector<std::int64_t>& occupied_cells() const { return occupied_; }
   IndexRange cell_range(std::int64_t c) const { return {begin_[c], begin_[c + 1]}; }
   const std::array<int, 3>& dims() const { return n_; }
-  double cell_size() const { return cell_; }
+  const Vec3d& cell_size() const { return cell_; }
   const Vec3d& origin() const { return origin_; }
+  const Vec3d& period() const { return period_; }  ///< domain length on periodic axes, else 0
+  bool periodic(int axis) const { return periodic_[axis]; }
   std::size_t bytes() const {
     return begin_.capacity() * sizeof(std::uint32_t) + occupied_.capacity() * sizeof(std::int64_t) +
            scratch_.capacity_bytes();
@@ -67,8 +95,11 @@ class CellGrid {
   };
 
   Vec3d origin_{};
-  double cell_ = 1;
-  double inv_cell_ = 1;
+  Vec3d upper_{};
+  Vec3d cell_{1, 1, 1};
+  Vec3d inv_cell_{1, 1, 1};
+  Vec3d period_{};
+  std::array<bool, 3> periodic_{};
   double max_displacement_ = 0;
   std::array<int, 3> n_{1, 1, 1};
   int dims_ = 3;

@@ -20,10 +20,11 @@ GlobalMeasures measure(const Simulation& sim) {
   const double mass = sim.model().mass;
   GlobalMeasures g;
   double ke = 0, vmax2 = 0, rmin = std::numeric_limits<double>::infinity(), rmax = -rmin;
-  std::size_t nf = 0;
+  std::size_t nf = 0, nw = 0;
   const auto n = static_cast<std::int64_t>(p.size());
-#pragma omp parallel for reduction(+ : ke, nf) reduction(max : vmax2, rmax) reduction(min : rmin)
+#pragma omp parallel for reduction(+ : ke, nf, nw) reduction(max : vmax2, rmax) reduction(min : rmin)
   for (std::int64_t i = 0; i < n; ++i) {
+    nw += p.kind[i] == ParticleKind::Wall;
     if (!is_fluid(p.kind[i])) continue;
     const double v2 = norm2(Vec3d(p.vel[i]));
     ke += 0.5 * mass * v2;
@@ -33,7 +34,8 @@ GlobalMeasures measure(const Simulation& sim) {
     ++nf;
   }
   g.fluid = nf;
-  g.boundary = p.size() - nf;
+  g.walls = nw;
+  g.buffer = p.size() - nf - nw;
   g.kinetic_energy = ke;
   g.fluid_mass = mass * static_cast<double>(nf);
   g.max_speed = std::sqrt(vmax2);
@@ -49,8 +51,11 @@ std::vector<CsvColumn> series_columns(int dims) {
           {"dt", "s"},
           {"step", ""},
           {"fluid_particles", ""},
-          {"boundary_particles", ""},
+          {"wall_particles", ""},
+          {"buffer_particles", ""},
           {"lost_particles", ""},
+          {"inflow_particles", ""},
+          {"outflow_particles", ""},
           {"kinetic_energy", "J" + per},
           {"fluid_mass", "kg" + per},
           {"max_speed", "m/s"},
@@ -96,8 +101,11 @@ void RunOutputs::write_series_row(const Simulation& sim, double wall_s) {
                         sim.steps() > 0 ? sim.last_dt() : 0.0,
                         static_cast<double>(sim.steps()),
                         static_cast<double>(g.fluid),
-                        static_cast<double>(g.boundary),
+                        static_cast<double>(g.walls),
+                        static_cast<double>(g.buffer),
                         static_cast<double>(d.lost_total),
+                        static_cast<double>(d.open.entered_fluid),
+                        static_cast<double>(d.open.removed),
                         g.kinetic_energy,
                         g.fluid_mass,
                         g.max_speed,

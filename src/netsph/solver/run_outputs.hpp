@@ -16,7 +16,7 @@ namespace netsph {
 
 /// Global quantities of the current state (double sums, fluid particles only unless noted).
 struct GlobalMeasures {
-  std::size_t fluid = 0, boundary = 0;
+  std::size_t fluid = 0, walls = 0, buffer = 0;
   double kinetic_energy = 0;                ///< J (J/m in 2D)
   double fluid_mass = 0;                    ///< kg (kg/m in 2D)
   double max_speed = 0;                     ///< m/s

@@ -58,8 +58,13 @@ nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const Run
       {"sound_speed_m_s", sim.scene().sound_speed},
       {"density_diffusion", diffusion_name(s.fluid.density_diffusion)},
       {"viscosity", s.fluid.viscosity == ViscosityModel::Laminar ? "laminar" : "artificial"}};
-  j["particles"] = {
-      {"fluid", g.fluid}, {"boundary", g.boundary}, {"lost", sim.diagnostics().lost_total}};
+  const auto& d = sim.diagnostics();
+  j["particles"] = {{"fluid", g.fluid},
+                    {"wall", g.walls},
+                    {"buffer", g.buffer},
+                    {"lost", d.lost_total},
+                    {"inflow", d.open.entered_fluid},
+                    {"outflow", d.open.removed}};
   j["time"] = {{"simulated_s", r.sim_time},
                {"end_time_s", s.simulation.end_time},
                {"steps", r.steps},
@@ -119,9 +124,10 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
       particle_steps += static_cast<double>(sim.particles().size());
       sim.step();
       if (sim.diagnostics().lost_total > 0 && !warned_lost) {
-        spdlog::warn("t = {:.6g} s: particles are leaving the domain and are removed (reported in "
-                     "series.csv, lost_particles); enlarge [domain] if they should stay",
-                     sim.time());
+        spdlog::warn(
+            "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
+            "series.csv, lost_particles); enlarge [domain] if they should stay",
+            sim.time());
         warned_lost = true;
       }
       outputs.maybe_write(sim, wall());

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "netsph/boundary/wall_ghosts.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
@@ -48,7 +49,7 @@ std::size_t remove_overlaps(ParticleSet& p, double dp, const Vec3d& lo, const Ve
   grid.sort(p.pos, order);
   std::vector<char> keep(p.size(), 1);
   const double tol2 = 0.25 * dp * dp;
-  std::array<IndexRange, 25> ranges;
+  NeighbourRanges ranges;
   for (std::int64_t c = 0; c < grid.cell_count(); ++c) {
     const IndexRange own = grid.cell_range(c);
     if (own.begin == own.end) continue;
@@ -68,9 +69,29 @@ std::size_t remove_overlaps(ParticleSet& p, double dp, const Vec3d& lo, const Ve
   ParticleSet q;
   q.reserve(p.size() - removed);
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (keep[i]) q.add(p.pos[i], p.vel[i], p.rho[i], p.kind[i]);
+    if (keep[i]) q.append_copy(p, i);
+  q.next_id = p.next_id;
   p = std::move(q);
   return removed;
+}
+
+OpenBoundaryZone make_zone(const OpenBoundarySpec& o, bool inlet, const CaseSpec& spec,
+                           double default_surface) {
+  OpenBoundaryZone z;
+  z.name = o.name;
+  z.inlet = inlet;
+  z.axis = static_cast<int>(o.face) / 2;
+  const bool min_face = static_cast<int>(o.face) % 2 == 0;
+  z.inward = min_face ? 1.0 : -1.0;
+  z.width = o.layers * spec.simulation.dp;
+  z.plane = min_face ? spec.domain.min[z.axis] + z.width : spec.domain.max[z.axis] - z.width;
+  z.velocity_imposed = inlet || o.velocity.has_value();
+  z.speed = o.velocity.value_or(0.0);
+  z.profile_z = o.profile_z;
+  z.profile_u = o.profile_u;
+  z.density = o.density;
+  z.surface_z = o.surface_z.value_or(default_surface);
+  return z;
 }
 
 }  // namespace
@@ -109,23 +130,65 @@ Scene build_scene(const CaseSpec& spec) {
   const TaitEos& eos = scene.model.eos;
   const double gz = spec.fluid.gravity.z;
 
-  ParticleSet& p = scene.particles;
   for (const auto& w : spec.walls) {
-    const auto pts = wall_box_layers(lattice_box(w.box, dims), dp, w.faces, w.layers);
-    for (const auto& x : pts) {
+    if (w.model == WallModel::Mdbc && w.slip == WallSlip::NoSlip &&
+        spec.fluid.viscosity == ViscosityModel::Artificial) {
+      scene.warnings.push_back(fmt::format(
+          "wall '{}': slip = \"no_slip\" with artificial viscosity; artificial viscosity acts only "
+          "on approaching pairs, so the mirrored wall velocities drag the fluid next to the wall "
+          "backwards and particles can leak into the wall. Use slip = \"wall_velocity\" (the "
+          "default) or laminar viscosity",
+          w.name));
+    }
+  }
+  for (const auto& o : spec.inlets) scene.zones.push_back(make_zone(o, true, spec, top_surface));
+  for (const auto& o : spec.outlets) scene.zones.push_back(make_zone(o, false, spec, top_surface));
+
+  ParticleSet& p = scene.particles;
+  for (std::size_t wi = 0; wi < spec.walls.size(); ++wi) {
+    const auto& w = spec.walls[wi];
+    const LatticeBox box = lattice_box(w.box, dims);
+    const auto pts = wall_box_layers(box, dp, w.faces, w.layers);
+    std::vector<Vec3f> ghosts(pts.size());
+    if (w.model == WallModel::Mdbc) {
+      ghosts = box_wall_ghost_offsets(pts, box.min, lattice_max(box, dp), dims);
+    }
+    const Vec3f v0(w.motion.at(0.0));
+    for (std::size_t k = 0; k < pts.size(); ++k) {
       // Walls start hydrostatic with the highest free surface so that DBC does not need a
       // transient to build the pressure that holds the fluid up.
-      p.add(x, {}, hydrostatic_density(eos, gz, top_surface, x.z), ParticleKind::Wall);
+      p.add(pts[k], v0, hydrostatic_density(eos, gz, top_surface, pts[k].z), ParticleKind::Wall,
+            static_cast<std::uint32_t>(wi), ghosts[k]);
     }
     scene.sources.push_back({w.name, pts.size()});
   }
+  std::vector<std::size_t> buffer_count(scene.zones.size(), 0);
   for (std::size_t i = 0; i < spec.fills.size(); ++i) {
     const auto& f = spec.fills[i];
     const auto pts = fill_box(lattice_box(f.box, dims), dp);
     const double surface = surface_of(f, dp, dims);
-    for (const auto& x : pts)
-      p.add(x, Vec3f(f.velocity), hydrostatic_density(eos, gz, surface, x.z), ParticleKind::Fluid);
+    for (const auto& x : pts) {
+      const Real rho = hydrostatic_density(eos, gz, surface, x.z);
+      const int z = zone_containing(scene.zones, x);
+      if (z < 0) {
+        p.add(x, Vec3f(f.velocity), rho, ParticleKind::Fluid);
+      } else {
+        // Fill particles that start inside an open boundary's buffer belong to it.
+        const OpenBoundaryZone& zone = scene.zones[static_cast<std::size_t>(z)];
+        const Vec3f v = zone.velocity_imposed ? zone.imposed_velocity(x) : Vec3f(f.velocity);
+        p.add(x, v, rho, ParticleKind::Buffer, static_cast<std::uint32_t>(z));
+        ++buffer_count[static_cast<std::size_t>(z)];
+      }
+    }
     scene.sources.push_back({fmt::format("fill{}", i + 1), pts.size()});
+  }
+  for (std::size_t z = 0; z < scene.zones.size(); ++z) {
+    if (buffer_count[z] == 0) {
+      scene.warnings.push_back(
+          fmt::format("{} '{}' starts with no buffer particles: no fill reaches its face",
+                      scene.zones[z].inlet ? "inlet" : "outlet", scene.zones[z].name));
+    }
+    scene.sources.push_back({scene.zones[z].name + " (buffer)", buffer_count[z]});
   }
   if (p.size() == 0) throw Error(spec.source, "the case creates no particles");
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "netsph/boundary/open_boundary.hpp"
 #include "netsph/case/case_spec.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/particle_set.hpp"
@@ -21,6 +22,7 @@ struct Scene {
   double sound_speed = 0;  ///< c0, m/s
   double fluid_depth = 0;  ///< deepest fill, m (used for c0 = coef sqrt(g H))
   Vec3d domain_min{}, domain_max{};
+  std::vector<OpenBoundaryZone> zones;  ///< inlets, then outlets (buffer particles' group)
   std::vector<SceneSource> sources;
   std::size_t removed_overlaps = 0;  ///< fluid particles dropped for sitting on another particle
   std::vector<std::string> warnings;

@@ -1,9 +1,12 @@
 #include "netsph/solver/simulation.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include <fmt/format.h>
+
+#include "netsph/boundary/mdbc.hpp"
 
 namespace netsph {
 
@@ -13,14 +16,40 @@ Simulation::Simulation(const CaseSpec& spec)
   // A 5% skin costs 16% more candidates in 3D but lets one sort serve both stages; the
   // half-step displacement is at most CFL h v/(2 c0) ~ 0.01 h, so re-sorts are rare.
   constexpr double kSkin = 0.05;
-  grid_.configure(scene_.domain_min, scene_.domain_max, m.support, kSkin, m.dims);
+  grid_.configure(scene_.domain_min, scene_.domain_max, m.support, kSkin, m.dims,
+                  spec.domain.periodic);
+  walls_.resize(spec.walls.size());
+  for (std::size_t w = 0; w < spec.walls.size(); ++w) {
+    walls_[w].shows_own_velocity =
+        spec.walls[w].model == WallModel::Dbc || spec.walls[w].slip == WallSlip::WallVelocity;
+  }
+  shift_on_ = spec.fluid.shifting == ShiftingModel::Fickian;
+  shift_params_.coefficient = static_cast<Real>(spec.fluid.shifting_coefficient);
+  shift_params_.h = m.kernel.h;
+  shift_params_.threshold = static_cast<Real>(spec.fluid.shifting_surface_threshold > 0
+                                                  ? spec.fluid.shifting_surface_threshold
+                                                  : default_shifting_threshold(m.dims));
+  shift_params_.dims = static_cast<Real>(m.dims);
+  shift_params_.max_component = static_cast<Real>(0.1 * spec.simulation.dp);
 }
 
 void Simulation::sort_particles(bool mid_step) {
   const std::size_t before = p_.size();
+  if (mid_step) {
+    // Wrap the step-start positions by the same periods, so the corrector stays consistent.
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const Vec3d q = grid_.wrapped(p_.pos[i]);
+      start_.pos[i] += q - p_.pos[i];
+      p_.pos[i] = q;
+    }
+  } else {
+    grid_.wrap(p_.pos);
+  }
   grid_.sort(p_.pos, order_);
   gather_into(p_.kind, order_, scratch_kind_);
   gather_into(p_.id, order_, scratch_u32_);
+  gather_into(p_.group, order_, scratch_u32_);
+  gather_into(p_.ghost, order_, scratch_f3_);
   if (!mid_step) {
     // At the start of a step the step-start arrays hold nothing live: use them as scratch.
     gather_into(p_.pos, order_, start_.pos);
@@ -60,36 +89,132 @@ double Simulation::compute_dt(const RateReductions& r) {
   return dt;
 }
 
+void Simulation::update_wall_kinematics(double dt) {
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const VelocityHistory& m = spec_.walls[w].motion;
+    walls_[w].start = Vec3f(m.at(time_));
+    walls_[w].half = Vec3f(m.at(time_ + 0.5 * dt));
+    walls_[w].end = Vec3f(m.at(time_ + dt));
+  }
+}
+
+void Simulation::apply_open_boundary_state() {
+  const auto& zones = scene_.zones;
+  if (zones.empty()) return;
+  const TaitEos& eos = scene_.model.eos;
+  const double gz = spec_.fluid.gravity.z;
+  ghost_targets_.clear();
+  ghost_points_.clear();
+  for (std::uint32_t i = 0; i < p_.size(); ++i) {
+    if (p_.kind[i] != ParticleKind::Buffer) continue;
+    const OpenBoundaryZone& z = zones[p_.group[i]];
+    if (z.velocity_imposed) p_.vel[i] = z.imposed_velocity(p_.pos[i]);
+    if (z.density == BufferDensity::Hydrostatic) {
+      const double pressure = -static_cast<double>(eos.rho0) * gz * (z.surface_z - p_.pos[i].z);
+      p_.rho[i] = static_cast<Real>(pressure > 0 ? eos.density(pressure) : eos.rho0);
+    }
+    if (!z.velocity_imposed || z.density == BufferDensity::Extrapolated) {
+      ghost_targets_.push_back(i);
+      ghost_points_.push_back(z.ghost_of(p_.pos[i]));
+    }
+  }
+  for_each_ghost_value(
+      scene_.model, grid_, p_, ghost_points_, GhostSources::FluidOnly,
+      [&](std::size_t k, const GhostValue& g) {
+        if (!g.any) return;  // no fluid in reach: keep the previous state
+        const std::uint32_t i = ghost_targets_[k];
+        const OpenBoundaryZone& z = zones[p_.group[i]];
+        // First-order extrapolation from the ghost node back to the buffer particle.
+        const Vec3d to_b = p_.pos[i] - ghost_points_[k];
+        if (z.density == BufferDensity::Extrapolated) {
+          p_.rho[i] = static_cast<Real>(g.first_order ? g.rho + dot(g.grad_rho, to_b) : g.rho);
+        }
+        if (!z.velocity_imposed) {
+          // The velocity is the corrected value at the ghost node, not extrapolated further along
+          // its gradient: at an outlet the flow accelerates towards the buffer, and extrapolating
+          // that gradient feeds back (faster buffer -> faster fluid -> steeper gradient) and
+          // drains the channel (14% too fast in a 3D channel at 5 layers; docs/VALIDATION.md).
+          p_.vel[i] = Vec3f(g.vel);
+        }
+      });
+}
+
+void Simulation::apply_mdbc() {
+  ghost_targets_.clear();
+  ghost_points_.clear();
+  for (std::uint32_t i = 0; i < p_.size(); ++i) {
+    if (p_.kind[i] != ParticleKind::Wall) continue;
+    const std::uint32_t w = p_.group[i];
+    const Vec3f& g = p_.ghost[i];
+    if (spec_.walls[w].model == WallModel::Mdbc && (g.x != 0 || g.y != 0 || g.z != 0)) {
+      ghost_targets_.push_back(i);
+      ghost_points_.push_back(p_.pos[i] + Vec3d(g));
+    } else if (walls_[w].shows_own_velocity) {
+      p_.vel[i] = walls_[w].start;
+    }
+  }
+  if (ghost_targets_.empty()) return;
+  std::atomic<std::size_t> fallbacks{0};
+  for_each_ghost_value(scene_.model, grid_, p_, ghost_points_, GhostSources::FluidAndBuffer,
+                       [&](std::size_t k, const GhostValue& g) {
+                         const std::uint32_t i = ghost_targets_[k];
+                         const WallSpec& w = spec_.walls[p_.group[i]];
+                         if (g.any && !g.first_order)
+                           fallbacks.fetch_add(1, std::memory_order_relaxed);
+                         const WallState s = mdbc_wall_state(g, p_.ghost[i], scene_.model.eos.rho0,
+                                                             w.slip, walls_[p_.group[i]].start);
+                         p_.rho[i] = s.rho;
+                         p_.vel[i] = s.vel;
+                       });
+  diag_.mdbc_fallbacks = fallbacks.load();
+}
+
 void Simulation::fail_non_finite(std::int64_t i) const {
   const Vec3d x = p_.pos[i];
   const Vec3f v = p_.vel[i];
+  static const char* kind_name[] = {"fluid", "wall", "buffer"};
   throw SimulationUnstable(
       "solver",
-      fmt::format(
-          "non-finite state at t = {:.6g} s (step {}): particle id {} ({}) at ({:.4g}, {:.4g}, "
-          "{:.4g}) m, velocity ({:.3g}, {:.3g}, {:.3g}) m/s, density {:.4g} kg/m^3",
-          time_, steps_, p_.id[i], is_fluid(p_.kind[i]) ? "fluid" : "wall", x.x, x.y, x.z, v.x, v.y,
-          v.z, p_.rho[i]));
+      fmt::format("non-finite state at t = {:.6g} s (step {}): particle id {} ({}) at ({:.4g}, "
+                  "{:.4g}, {:.4g}) m, velocity ({:.3g}, {:.3g}, {:.3g}) m/s, density {:.4g} kg/m^3",
+                  time_, steps_, p_.id[i], kind_name[static_cast<int>(p_.kind[i])], x.x, x.y, x.z,
+                  v.x, v.y, v.z, p_.rho[i]));
 }
 
 void Simulation::step() {
   const FluidModel& m = scene_.model;
+
+  // Open boundaries first: conversions use positions only, and the sort then places the
+  // created particles and drops the removed ones.
+  const OpenBoundaryCounts ob = update_open_boundary_particles(p_, scene_.zones);
+  diag_.open.entered_fluid += ob.entered_fluid;
+  diag_.open.created += ob.created;
+  diag_.open.removed += ob.removed;
+  diag_.open.absorbed += ob.absorbed;
   sort_particles(false);
+  diag_.lost_total -= ob.removed;  // left through an outlet: not lost
+
+  update_wall_kinematics(0.0);  // velocities at t for the boundary state
+  apply_open_boundary_state();
+  apply_mdbc();
 
   build_view();
   const RateReductions r0 = compute_rates(m, grid_, view_, p_.kind, acc_, drho_);
   const double dt = compute_dt(r0);
+  update_wall_kinematics(dt);
+  const StageInputs in{acc_, drho_, dt, walls_};
 
   start_.save(p_);
-  const double moved = symplectic_predictor(p_, start_, acc_, drho_, dt, m);
+  const double moved = symplectic_predictor(p_, start_, in, m);
   if (moved > grid_.max_displacement()) {
     sort_particles(true);
     ++diag_.resorts;
   }
 
   build_view();
-  compute_rates(m, grid_, view_, p_.kind, acc_, drho_);
-  const std::int64_t bad = symplectic_corrector(p_, start_, acc_, drho_, dt, m);
+  compute_rates(m, grid_, view_, p_.kind, acc_, drho_, shift_on_ ? &shift_sums_ : nullptr);
+  const std::int64_t bad =
+      symplectic_corrector(p_, start_, in, m, shift_on_ ? &shift_sums_ : nullptr, &shift_params_);
   time_ += dt;
   ++steps_;
   if (bad >= 0) fail_non_finite(bad);
@@ -113,7 +238,9 @@ double Simulation::bytes_per_particle() const {
       drho_.capacity() * sizeof(Real) + order_.capacity() * sizeof(std::uint32_t) + grid_.bytes() +
       scratch_d3_.capacity() * sizeof(Vec3d) + scratch_f3_.capacity() * sizeof(Vec3f) +
       scratch_f_.capacity() * sizeof(Real) + scratch_kind_.capacity() +
-      scratch_u32_.capacity() * sizeof(std::uint32_t);
+      scratch_u32_.capacity() * sizeof(std::uint32_t) +
+      shift_sums_.grad_c.capacity() * sizeof(Vec3f) + shift_sums_.div_r.capacity() * sizeof(Real) +
+      ghost_targets_.capacity() * sizeof(std::uint32_t) + ghost_points_.capacity() * sizeof(Vec3d);
   return static_cast<double>(bytes) / n;
 }
 

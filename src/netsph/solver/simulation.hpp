@@ -2,11 +2,13 @@
 // Simulation: one run of a case. It owns the particles, the neighbour grid and the per-step
 // work arrays, and advances the state with the symplectic scheme and variable dt:
 //
-//   step():  sort by cell (drops particles that left the domain)
+//   step():  open boundaries: buffer -> fluid, new inlet particles, outflow removed
+//            wrap periodic axes; sort by cell (drops particles that left the domain)
+//            open-boundary buffer state (imposed / extrapolated); mDBC wall state
 //            view of state n  -> rates a^n, drho^n  -> dt (CFL)
 //            save state n     -> predictor (half step)
 //            [re-sort if the half step moved a particle past the grid skin]
-//            view of half step -> rates           -> corrector (full step)
+//            view of half step -> rates (+ shifting sums) -> corrector (full step, shifting)
 //            checks: non-finite state, dt below the floor
 //
 // run() adds the outputs (snapshots, series.csv, summary.json) and the progress display.
@@ -15,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "netsph/backend/cpu/ghost_pass.hpp"
 #include "netsph/backend/cpu/integrate.hpp"
 #include "netsph/backend/cpu/interaction_view.hpp"
 #include "netsph/backend/cpu/rates.hpp"
@@ -22,6 +25,7 @@
 #include "netsph/core/error.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
 #include "netsph/solver/scene.hpp"
+#include "netsph/sph/shifting.hpp"
 #include "netsph/sph/time_step.hpp"
 
 namespace netsph {
@@ -34,10 +38,12 @@ class SimulationUnstable : public Error {
 };
 
 struct StepDiagnostics {
-  TimeStepLimits dt_limits;    ///< of the last step
-  double max_speed = 0;        ///< m/s, fluid, end of step
-  std::size_t lost_total = 0;  ///< particles removed for leaving the domain, since the start
-  int resorts = 0;             ///< extra sorts because the half step exceeded the grid skin
+  TimeStepLimits dt_limits;        ///< of the last step
+  double max_speed = 0;            ///< m/s, fluid, end of step
+  std::size_t lost_total = 0;      ///< particles removed for leaving the domain, since the start
+  int resorts = 0;                 ///< extra sorts because the half step exceeded the grid skin
+  OpenBoundaryCounts open;         ///< open-boundary events since the start
+  std::size_t mdbc_fallbacks = 0;  ///< mDBC ghosts solved at zeroth order, last step
 };
 
 class Simulation {
@@ -50,6 +56,7 @@ class Simulation {
   const CaseSpec& spec() const { return spec_; }
   const Scene& scene() const { return scene_; }
   const FluidModel& model() const { return scene_.model; }
+  const CellGrid& grid() const { return grid_; }
   const ParticleSet& particles() const { return p_; }
   ParticleSet& particles() { return p_; }
   double time() const { return time_; }
@@ -57,6 +64,7 @@ class Simulation {
   double last_dt() const { return diag_.dt_limits.dt; }
   const StepDiagnostics& diagnostics() const { return diag_; }
   double dt_floor() const { return dt_floor_; }
+  bool shifting_enabled() const { return shift_on_; }
 
   /// Pressure of every particle from the equation of state.
   std::vector<float> pressures() const;
@@ -67,6 +75,9 @@ class Simulation {
   void sort_particles(bool mid_step);
   void build_view() { view_.build(p_, scene_.model, grid_.origin()); }
   double compute_dt(const RateReductions& r);
+  void update_wall_kinematics(double dt);
+  void apply_open_boundary_state();
+  void apply_mdbc();
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
 
   CaseSpec spec_;
@@ -78,6 +89,13 @@ class Simulation {
   std::vector<Vec3f> acc_;
   std::vector<Real> drho_;
   std::vector<std::uint32_t> order_;
+  std::vector<WallKinematics> walls_;  // by wall index
+  bool shift_on_ = false;
+  ShiftingParams shift_params_;
+  ShiftingSums shift_sums_;
+  // Ghost-node scratch (mDBC walls, open-boundary buffers).
+  std::vector<std::uint32_t> ghost_targets_;
+  std::vector<Vec3d> ghost_points_;
   // Scratch for reordering, reused so the time loop allocates nothing once warm.
   std::vector<Vec3d> scratch_d3_;
   std::vector<Vec3f> scratch_f3_;

@@ -67,7 +67,8 @@ NETSPH_HD void fluid_pair_rates(const FluidModel& m, Real rho_a, Real press_a, c
   }
   s.acc += b.rab * (-b.mass_b * p_term * fac);
   if constexpr (Visc == ViscosityModel::Laminar) {
-    const Real lam = b.mass_b * Real(4) * m.nu * fac * b.r2 * inv_r2_eta / (rho_a + b.rho_b);
+    const Real lam =
+        b.mass_b * Real(4) * m.nu * fac * b.r2 / ((b.r2 + m.eta2_laminar) * (rho_a + b.rho_b));
     s.acc += b.vab * lam;
   }
   const Real amu = mu < Real(0) ? -mu : mu;

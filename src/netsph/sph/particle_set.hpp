@@ -13,11 +13,17 @@ namespace netsph {
 
 enum class ParticleKind : std::uint8_t {
   Fluid = 0,
-  Wall = 1,  ///< boundary particle of a wall (DBC)
+  Wall = 1,    ///< boundary particle of a wall (DBC or mDBC); `group` = wall index
+  Buffer = 2,  ///< open-boundary buffer particle; `group` = zone index (inlets, then outlets)
 };
 
+/// Particles the momentum and continuity equations move.
 inline bool is_fluid(ParticleKind k) {
   return k == ParticleKind::Fluid;
+}
+/// Particles that carry fluid state as neighbours (fluid and open-boundary buffers).
+inline bool carries_fluid(ParticleKind k) {
+  return k != ParticleKind::Wall;
 }
 
 struct ParticleSet {
@@ -25,19 +31,32 @@ struct ParticleSet {
   std::vector<Vec3f> vel;  ///< m/s
   std::vector<Real> rho;   ///< kg/m^3
   std::vector<ParticleKind> kind;
-  std::vector<std::uint32_t> id;  ///< unique, never reused
+  std::vector<std::uint32_t> id;     ///< unique, never reused
+  std::vector<std::uint32_t> group;  ///< wall or zone index (see ParticleKind); 0 for fluid
+  /// mDBC: vector from a wall particle to its ghost node inside the fluid (zero: no ghost).
+  std::vector<Vec3f> ghost;
   std::uint32_t next_id = 0;
 
   std::size_t size() const { return pos.size(); }
 
   void reserve(std::size_t n) {
     pos.reserve(n), vel.reserve(n), rho.reserve(n), kind.reserve(n), id.reserve(n);
+    group.reserve(n), ghost.reserve(n);
   }
 
-  std::uint32_t add(const Vec3d& p, const Vec3f& v, Real density, ParticleKind k) {
+  std::uint32_t add(const Vec3d& p, const Vec3f& v, Real density, ParticleKind k,
+                    std::uint32_t grp = 0, const Vec3f& ghost_offset = {}) {
     pos.push_back(p), vel.push_back(v), rho.push_back(density), kind.push_back(k);
+    group.push_back(grp), ghost.push_back(ghost_offset);
     id.push_back(next_id);
     return next_id++;
+  }
+
+  /// Copies particle i of `o` (with its id) to the end of this set.
+  void append_copy(const ParticleSet& o, std::size_t i) {
+    pos.push_back(o.pos[i]), vel.push_back(o.vel[i]), rho.push_back(o.rho[i]);
+    kind.push_back(o.kind[i]), id.push_back(o.id[i]), group.push_back(o.group[i]);
+    ghost.push_back(o.ghost[i]);
   }
 
   std::size_t count(ParticleKind k) const {
@@ -50,7 +69,8 @@ struct ParticleSet {
   std::size_t bytes() const {
     return pos.capacity() * sizeof(Vec3d) + vel.capacity() * sizeof(Vec3f) +
            rho.capacity() * sizeof(Real) + kind.capacity() * sizeof(ParticleKind) +
-           id.capacity() * sizeof(std::uint32_t);
+           id.capacity() * sizeof(std::uint32_t) + group.capacity() * sizeof(std::uint32_t) +
+           ghost.capacity() * sizeof(Vec3f);
   }
 };
 

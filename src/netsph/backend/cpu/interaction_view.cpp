@@ -13,7 +13,7 @@ void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec
     vx[i] = p.vel[i].x, vy[i] = p.vel[i].y, vz[i] = p.vel[i].z;
     rho[i] = p.rho[i];
     press[i] = m.eos.pressure(p.rho[i]);
-    fluid[i] = is_fluid(p.kind[i]) ? Real(1) : Real(0);
+    fluid[i] = carries_fluid(p.kind[i]) ? Real(1) : Real(0);
   }
 }
 

@@ -17,7 +17,7 @@ struct InteractionView {
   std::vector<Real> x, y, z;
   std::vector<Real> vx, vy, vz;
   std::vector<Real> rho, press;
-  std::vector<Real> fluid;  ///< 1 for fluid particles, 0 for boundary particles
+  std::vector<Real> fluid;  ///< 1 for fluid and buffer particles, 0 for wall particles
 
   void build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin);
   std::size_t bytes() const { return 9 * x.capacity() * sizeof(Real); }

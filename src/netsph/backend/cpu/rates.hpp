@@ -17,9 +17,16 @@ struct RateReductions {
   double max_visc_dt = 0;  ///< max |h v_ab.r_ab/(r^2+eta^2)|, 1/s
 };
 
-/// Fills acc (fluid particles: with gravity; boundary particles: zero) and drho.
+/// Sums for particle shifting (sph/shifting.hpp), filled for fluid particles when requested.
+struct ShiftingSums {
+  std::vector<Vec3f> grad_c;  ///< sum_b V_b grad_a W_ab
+  std::vector<Real> div_r;    ///< -sum_b V_b r_ab . grad_a W_ab (2 or 3 inside the fluid)
+};
+
+/// Fills acc (fluid particles: with gravity; others: zero) and drho (fluid and walls; zero for
+/// buffer particles, whose state the open boundaries impose). `shifting` may be null.
 RateReductions compute_rates(const FluidModel& m, const CellGrid& grid, const InteractionView& v,
                              std::span<const ParticleKind> kind, std::vector<Vec3f>& acc,
-                             std::vector<Real>& drho);
+                             std::vector<Real>& drho, ShiftingSums* shifting = nullptr);
 
 }  // namespace netsph

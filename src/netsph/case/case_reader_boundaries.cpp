@@ -1,0 +1,363 @@
+// The boundary tables of a case file: [[wall]], [[inlet]] and [[outlet]]. Same conventions as
+// case_reader.cpp: unknown keys first, then the keys in a fixed order, then the rules that
+// combine keys (mDBC layers, buffers, faces of [domain], unique names).
+// docs/case-reference.md documents every key; keep the two in step.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "netsph/case/case_reader_impl.hpp"
+#include "netsph/core/error.hpp"
+
+namespace netsph::case_detail {
+namespace {
+
+const std::vector<std::string_view> kMotionKeys = {"times", "velocities"};
+const std::vector<std::string_view> kProfileKeys = {"z", "u"};
+
+constexpr std::array kWallModels = {Choice<WallModel>{"dbc", WallModel::Dbc},
+                                    Choice<WallModel>{"mdbc", WallModel::Mdbc}};
+constexpr std::array kWallSlips = {Choice<WallSlip>{"no_slip", WallSlip::NoSlip},
+                                   Choice<WallSlip>{"free_slip", WallSlip::FreeSlip},
+                                   Choice<WallSlip>{"wall_velocity", WallSlip::WallVelocity}};
+constexpr std::array kOpenFaces = {Choice<Face>{"xmin", kXMin}, Choice<Face>{"xmax", kXMax},
+                                   Choice<Face>{"ymin", kYMin}, Choice<Face>{"ymax", kYMax},
+                                   Choice<Face>{"zmin", kZMin}, Choice<Face>{"zmax", kZMax}};
+constexpr std::array kBufferDensities = {
+    Choice<BufferDensity>{"extrapolated", BufferDensity::Extrapolated},
+    Choice<BufferDensity>{"hydrostatic", BufferDensity::Hydrostatic}};
+
+/// `values` (read from the array `node`) must be strictly increasing.
+void check_increasing(const TomlTableReader& r, std::string_view key, const toml::node& node,
+                      const std::vector<double>& values) {
+  for (std::size_t k = 1; k < values.size(); ++k) {
+    if (values[k] > values[k - 1]) continue;
+    r.fail_value(key, node,
+                 fmt::format("must be strictly increasing, but element {} = {} <= element {} = {}",
+                             k + 1, format_number(values[k]), k, format_number(values[k - 1])),
+                 node.as_array()->get(k));
+  }
+}
+
+}  // namespace
+
+// ---- names --------------------------------------------------------------------------------
+
+void CaseReader::register_name(const toml::table& table, const std::string& name,
+                               std::string_view kind, const std::string& label,
+                               const SourceLocation& where) {
+  for (const NamedEntry& other : names_) {
+    if (other.name != name) continue;
+    const toml::node* name_node = table.get("name");
+    throw Error(source_.where(name_node ? name_node->source() : table.source()),
+                fmt::format("{} name \"{}\" is used twice: by {} ({}) and {}; names must be "
+                            "unique among walls, inlets and outlets",
+                            kind, name, other.label, other.where.str(), label));
+  }
+  names_.push_back({name, label, where});
+}
+
+// ---- [[wall]] -----------------------------------------------------------------------------
+
+void CaseReader::read_walls() {
+  const std::vector<const toml::table*> tables = find_array_of_tables("wall");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    WallSpec wall = read_wall(*tables[i], static_cast<int>(i) + 1);
+    register_name(*tables[i], wall.name, "wall", fmt::format("wall[{}]", i + 1), wall.where);
+    spec_.walls.push_back(std::move(wall));
+  }
+}
+
+WallSpec CaseReader::read_wall(const toml::table& table, int number) const {
+  const std::string name = fmt::format("wall[{}]", number);
+  TomlTableReader r(table, name, name, keys_of("wall"), source_, home_hint);
+  WallSpec wall;
+  wall.where = r.location();
+  wall.name = r.string("name", fmt::format("wall{}", number));
+  if (wall.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
+  wall.box = read_box(r, "the wall's fluid side");
+  wall.faces = read_faces(r);
+  // Default: enough layers to cover the kernel support 2h (3 at h = 1.5 dp).
+  wall.layers = static_cast<int>(r.integer("layers", IntRule{1, 10}, support_layers()));
+  wall.model = r.choice("model", kWallModels, wall.model);
+  if (const toml::node* slip = r.find("slip"); slip && wall.model == WallModel::Dbc) {
+    r.fail_value("slip", *slip,
+                 "slip applies to mdbc walls only (dbc wall particles always carry the wall's "
+                 "own velocity); remove slip or set model = \"mdbc\"");
+  }
+  wall.slip = r.choice("slip", kWallSlips, wall.slip);
+  wall.motion = read_wall_motion(r);
+  check_wall_layers(r, wall);
+  return wall;
+}
+
+std::array<bool, 6> CaseReader::read_faces(const TomlTableReader& r) const {
+  std::array<bool, 6> faces{};
+  const std::vector<std::string_view> allowed =
+      is_2d() ? std::vector<std::string_view>{"xmin", "xmax", "zmin", "zmax"}
+              : std::vector<std::string_view>(kFaceNames.begin(), kFaceNames.end());
+  const toml::node* node = r.find("faces");
+  if (!node) {
+    for (const std::string_view face : allowed) {
+      faces[std::find(kFaceNames.begin(), kFaceNames.end(), face) - kFaceNames.begin()] = true;
+    }
+    return faces;
+  }
+  const WordListRule rule{
+      .noun = "face",
+      .known = std::vector<std::string_view>(kFaceNames.begin(), kFaceNames.end()),
+      .allowed = allowed,
+      .not_allowed_reason = kNotIn2D,
+      .example = "[\"xmin\", \"xmax\", \"zmin\"]",
+  };
+  for (const std::size_t face : r.to_word_list("faces", *node, rule)) faces[face] = true;
+  return faces;
+}
+
+VelocityHistory CaseReader::read_wall_motion(const TomlTableReader& r) const {
+  VelocityHistory motion;
+  const toml::node* velocity = r.find("velocity");
+  const toml::node* node = r.find("motion");
+  if (velocity && node) {
+    r.fail_value("motion", *node,
+                 fmt::format("cannot be combined with {}: give either a constant velocity = "
+                             "[u, v, w] or a motion = {{ times = [...], velocities = [...] }}, "
+                             "not both",
+                             r.key_path("velocity")));
+  }
+  if (velocity) {
+    motion.times = {0.0};
+    motion.velocities = {read_in_plane_vector(r, "velocity", NumberRule::any("m/s"), {})};
+    return motion;
+  }
+  if (!node) return motion;
+  const auto* table = node->as_table();
+  if (!table) {
+    r.fail_value("motion", *node,
+                 fmt::format("must be a table such as {{ times = [0, 1], velocities = "
+                             "[[0, 0, 0], [0.5, 0, 0]] }}, not {}",
+                             type_name(*node)));
+  }
+  const std::string path = r.key_path("motion");
+  TomlTableReader m(*table, path, path, kMotionKeys, source_);
+  const toml::node& times = m.require("times", "instants in s, >= 0, strictly increasing");
+  motion.times = m.to_number_array("times", times, NumberRule::non_negative("s"), 1);
+  check_increasing(m, "times", times, motion.times);
+  const toml::node& velocities = m.require("velocities", "one [u, v, w] in m/s per time");
+  const auto* array = velocities.as_array();
+  if (!array) {
+    m.fail_value("velocities", velocities,
+                 fmt::format("must be an array of [u, v, w] vectors in m/s, one per time, not {}",
+                             type_name(velocities)));
+  }
+  if (array->size() != motion.times.size()) {
+    m.fail_value(
+        "velocities", velocities,
+        fmt::format("must hold one [u, v, w] per time: {}.times has {} element{}, "
+                    "velocities has {}",
+                    path, motion.times.size(), motion.times.size() == 1 ? "" : "s", array->size()));
+  }
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string key = fmt::format("velocities[{}]", i + 1);
+    const toml::node& element = (*array)[i];
+    const Vec3d v = m.to_vec3(key, element, NumberRule::any("m/s"));
+    check_in_plane(m, key, element, v);
+    motion.velocities.push_back(v);
+  }
+  return motion;
+}
+
+/// mDBC extrapolates the fluid state to each boundary particle from a ghost point mirrored
+/// into the fluid, and fluid particles next to the wall need wall particles over their whole
+/// kernel: the wall must be at least 2h thick.
+void CaseReader::check_wall_layers(const TomlTableReader& r, const WallSpec& wall) const {
+  if (wall.model != WallModel::Mdbc) return;
+  const int needed = support_layers();
+  if (wall.layers >= needed) return;
+  const double thickness = wall.layers * spec_.simulation.dp;
+  const std::string dbc =
+      r.has("model") ? "model = \"dbc\"" : "model = \"dbc\" (mdbc is the default)";
+  const std::string why =
+      fmt::format("mDBC needs the wall layers to cover the kernel support {}", support_text());
+  // The default layers always suffice, so `layers` was given.
+  r.fail_value("layers", *r.find("layers"),
+               fmt::format("{}, but layers * dp = {} m; use layers >= {}, or {}", why,
+                           format_derived(thickness), needed, dbc));
+}
+
+// ---- [[inlet]] and [[outlet]] -------------------------------------------------------------
+
+void CaseReader::read_open_boundaries(bool inlet) {
+  const std::string_view kind = inlet ? "inlet" : "outlet";
+  std::vector<OpenBoundarySpec>& list = inlet ? spec_.inlets : spec_.outlets;
+  const std::vector<const toml::table*> tables = find_array_of_tables(kind);
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    OpenBoundarySpec ob = read_open_boundary(*tables[i], inlet, static_cast<int>(i) + 1);
+    register_name(*tables[i], ob.name, kind, fmt::format("{}[{}]", kind, i + 1), ob.where);
+    list.push_back(std::move(ob));
+  }
+}
+
+OpenBoundarySpec CaseReader::read_open_boundary(const toml::table& table, bool inlet, int number) {
+  const std::string_view kind = inlet ? "inlet" : "outlet";
+  const std::string label = fmt::format("{}[{}]", kind, number);
+  TomlTableReader r(table, label, label, keys_of(kind), source_, home_hint);
+  OpenBoundarySpec ob;
+  ob.where = r.location();
+  ob.name = r.string("name", fmt::format("{}{}", kind, number));
+  if (ob.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
+  ob.face = read_open_face(r, kind);
+  check_face_free(r, ob, label);
+  // Default: 4 layers as in the paper, more if the kernel support needs them.
+  ob.layers =
+      static_cast<int>(r.integer("layers", IntRule{1, 20}, std::max(ob.layers, support_layers())));
+  check_buffer(r, ob);
+  read_open_velocity(r, inlet, ob);
+  ob.density = r.choice("density", kBufferDensities, ob.density);
+  if (ob.density == BufferDensity::Hydrostatic && spec_.fluid.gravity.z == 0) {
+    r.fail_value("density", *r.find("density"),
+                 fmt::format("needs gravity along z for the hydrostatic pressure, but "
+                             "fluid.gravity = {} has z = 0; use \"extrapolated\"",
+                             format_vec3(spec_.fluid.gravity)));
+  }
+  ob.surface_z = r.optional_number("surface_z", NumberRule::any("m"));
+  return ob;
+}
+
+Face CaseReader::read_open_face(const TomlTableReader& r, std::string_view kind) const {
+  const toml::node& node =
+      r.require("face", "the face of [domain] it lies on: xmin, xmax, ymin, ymax, zmin or zmax");
+  const Face face = r.to_choice("face", node, kOpenFaces);
+  if (is_2d() && (face == kYMin || face == kYMax)) {
+    r.fail_value("face", node,
+                 fmt::format("face \"{}\" is not allowed {}; allowed: xmin, xmax, zmin, zmax",
+                             kFaceNames[face], kNotIn2D));
+  }
+  if (!spec_.domain.given) {
+    r.fail_value(
+        "face", node,
+        fmt::format("an [[{}]] lies on a face of [domain]: give [domain] min and max", kind));
+  }
+  // An open boundary may sit on a periodic axis: the paper's flumes make the moving walls
+  // periodic along the flow so their particles wrap around, while the fluid enters and leaves
+  // through buffers. The buffers cover the kernel support, so no fluid particle interacts
+  // across the period.
+  return face;
+}
+
+void CaseReader::check_face_free(const TomlTableReader& r, const OpenBoundarySpec& ob,
+                                 const std::string& label) {
+  std::optional<NamedEntry>& slot = open_faces_[static_cast<std::size_t>(ob.face)];
+  if (slot) {
+    r.fail_value("face", *r.find("face"),
+                 fmt::format("face \"{}\" already has an open boundary, {} ({}); a face takes at "
+                             "most one [[inlet]] or [[outlet]]",
+                             kFaceNames[ob.face], slot->label, slot->where.str()));
+  }
+  slot = NamedEntry{ob.name, label, ob.where};
+}
+
+void CaseReader::check_buffer(const TomlTableReader& r, const OpenBoundarySpec& ob) {
+  const double width = ob.layers * spec_.simulation.dp;
+  const toml::node* layers = r.find("layers");
+  const int needed = support_layers();
+  if (ob.layers < needed) {
+    const std::string why = fmt::format(
+        "the buffer must cover the kernel support {} so that the fluid next to it sees a full "
+        "kernel",
+        support_text());
+    // The default layers always suffice, so `layers` was given.
+    r.fail_value("layers", *layers,
+                 fmt::format("{}, but layers * dp = {} m; use layers >= {}", why,
+                             format_derived(width), needed));
+  }
+  const int axis = ob.face / 2;
+  const DomainSpec& d = spec_.domain;
+  const double extent = d.max[axis] - d.min[axis];
+  const std::size_t opposite = static_cast<std::size_t>(ob.face ^ 1);
+  if (width < extent && width + open_widths_[opposite] >= extent) {
+    const std::string message = fmt::format(
+        "this buffer ({} m) and the one of {} on the opposite face ({} m) together span the "
+        "whole domain along {} ({} m): no fluid would lie between them; use fewer layers or a "
+        "longer domain",
+        format_derived(width), open_faces_[opposite]->label, format_derived(open_widths_[opposite]),
+        "xyz"[axis], format_derived(extent));
+    if (layers) r.fail_value("layers", *layers, message);
+    r.fail_value("face", *r.find("face"), message);
+  }
+  open_widths_[static_cast<std::size_t>(ob.face)] = width;
+  if (width < extent) return;
+  const std::string message = fmt::format(
+      "the buffer (layers * dp = {} m) must be narrower than the domain along {}, which is {} m "
+      "from [domain] min to max",
+      format_derived(width), "xyz"[axis], format_derived(extent));
+  if (layers) r.fail_value("layers", *layers, message);
+  r.fail_value("face", *r.find("face"), message);
+}
+
+void CaseReader::read_open_velocity(const TomlTableReader& r, bool inlet,
+                                    OpenBoundarySpec& ob) const {
+  const toml::node* velocity = r.find("velocity");
+  const toml::node* profile = inlet ? r.find("profile") : nullptr;
+  if (velocity && profile) {
+    r.fail_value("profile", *profile,
+                 fmt::format("cannot be combined with {}: give a uniform velocity or a profile "
+                             "over z, not both",
+                             r.key_path("velocity")));
+  }
+  if (velocity) {
+    const double u = r.to_number("velocity", *velocity, NumberRule::any("m/s"));
+    if (u <= 0) {
+      r.fail_value("velocity", *velocity,
+                   inlet ? "must be > 0 m/s: it is the inflow speed normal to the face, into "
+                           "the domain (give |u|; the face sets the direction)"
+                         : "must be > 0 m/s: it is the outflow speed normal to the face, out of "
+                           "the domain (give |u|; leave velocity out to extrapolate it from the "
+                           "fluid)");
+    }
+    ob.velocity = u;
+  } else if (profile) {
+    read_profile(r, ob);
+  } else if (inlet) {
+    r.fail_table(
+        fmt::format("{} needs an inflow velocity: give velocity = <m/s> (uniform, > 0) "
+                    "or profile = {{ z = [...], u = [...] }}",
+                    r.title()));
+  }
+}
+
+void CaseReader::read_profile(const TomlTableReader& r, OpenBoundarySpec& ob) const {
+  const toml::node& node = *r.find("profile");
+  const auto* table = node.as_table();
+  if (!table) {
+    r.fail_value("profile", node,
+                 fmt::format("must be a table such as {{ z = [0, 0.3], u = [0.4, 0.6] }} "
+                             "(heights in m, speeds in m/s), not {}",
+                             type_name(node)));
+  }
+  if (ob.face == kZMin || ob.face == kZMax) {
+    r.fail_value(
+        "profile", node,
+        fmt::format("a profile over z needs a vertical face ({}), not \"{}\"; give a "
+                    "uniform velocity on a horizontal face",
+                    is_2d() ? "xmin or xmax" : "xmin, xmax, ymin or ymax", kFaceNames[ob.face]));
+  }
+  const std::string path = r.key_path("profile");
+  TomlTableReader p(*table, path, path, kProfileKeys, source_);
+  const toml::node& z = p.require("z", "heights in m, at least 2, strictly increasing");
+  ob.profile_z = p.to_number_array("z", z, NumberRule::any("m"), 2);
+  check_increasing(p, "z", z, ob.profile_z);
+  const toml::node& u = p.require("u", "inflow speeds in m/s, >= 0, one per height");
+  ob.profile_u = p.to_number_array("u", u, NumberRule::non_negative("m/s"), 2);
+  if (ob.profile_u.size() != ob.profile_z.size()) {
+    p.fail_value("u", u,
+                 fmt::format("must hold one speed per height: {}.z has {} elements, u has {}", path,
+                             ob.profile_z.size(), ob.profile_u.size()));
+  }
+  if (*std::max_element(ob.profile_u.begin(), ob.profile_u.end()) == 0) {
+    p.fail_value("u", u, "must have at least one speed > 0: the inlet lets fluid in");
+  }
+}
+
+}  // namespace netsph::case_detail

@@ -1,0 +1,126 @@
+#pragma once
+// The case-file schema and the CaseReader class, shared by case_reader.cpp (the top-level
+// tables: [simulation], [fluid], [domain], [[fill]], [output]) and case_reader_boundaries.cpp
+// ([[wall]], [[inlet]], [[outlet]]). Private to the case module (includes toml++).
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "netsph/case/case_spec.hpp"
+#include "netsph/case/toml_table_reader.hpp"
+
+namespace netsph::case_detail {
+
+// ---- schema: allowed keys per table, in the order the reference documents them ----------
+
+struct TableKeys {
+  std::string_view table;
+  std::vector<std::string_view> keys;
+};
+
+const std::vector<TableKeys>& schema();
+const std::vector<std::string_view>& keys_of(std::string_view table);
+/// "[fluid]" or "[[fill]]": how a top-level table is written.
+std::string header_of(std::string_view table);
+/// For a key that is close to nothing in its own table: maybe it was put in the wrong one.
+std::string home_hint(std::string_view key);
+
+/// A parameter given for a model it does not belong to is an error rather than silently
+/// ignored: the user believes it has an effect.
+void reject_foreign_parameter(const TomlTableReader& r, std::string_view key,
+                              std::string_view model, std::string_view owners,
+                              std::string_view own_keys);
+
+/// Quantities derived from several keys (2h, layers * dp): rounded, so that 0.06 is not
+/// printed as 0.060000000000000005.
+std::string format_derived(double v);
+
+inline constexpr std::array<std::string_view, 6> kFaceNames = {"xmin", "xmax", "ymin",
+                                                               "ymax", "zmin", "zmax"};
+inline constexpr std::string_view kPlaneReason = "2D runs in the x-z plane (z up)";
+/// Why y faces and the y axis are rejected in 2D (completes "... is not allowed ").
+inline constexpr std::string_view kNotIn2D = "in 2D because 2D runs in the x-z plane (z up)";
+
+// ---- the reader ---------------------------------------------------------------------------
+
+class CaseReader {
+ public:
+  CaseReader(const toml::table& root, const TomlSource& source) : root_(root), source_(source) {}
+
+  CaseSpec read(const std::string& default_name);
+
+ private:
+  bool is_2d() const { return spec_.simulation.dimensions == 2; }
+  /// Axes that carry geometry: x, z in 2D; x, y, z in 3D.
+  std::vector<int> used_axes() const { return is_2d() ? std::vector{0, 2} : std::vector{0, 1, 2}; }
+  /// The fewest particle layers that span the kernel support 2h: ceil(2 h / dp).
+  int support_layers() const;
+  /// "2h = 0.06 m (3 dp at h_over_dp = 1.5)"
+  std::string support_text() const;
+
+  [[noreturn]] void fail_root(const std::string& message) const;
+
+  void check_top_level() const;
+  const toml::table* find_table(std::string_view name) const;
+  std::vector<const toml::table*> find_array_of_tables(std::string_view name) const;
+
+  // case_reader.cpp
+  void read_simulation(const std::string& default_name);
+  void read_fluid();
+  void read_viscosity(const TomlTableReader& fluid);
+  void read_density_diffusion(const TomlTableReader& fluid);
+  void read_shifting(const TomlTableReader& fluid);
+  void read_domain();
+  std::array<bool, 3> read_periodic(const TomlTableReader& r) const;
+  void read_fills();
+  FillSpec read_fill(const toml::table& table, int number) const;
+  void check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const;
+  void read_output();
+
+  BoxSpec read_box(const TomlTableReader& r, std::string_view what) const;
+  Vec3d read_position(const TomlTableReader& r, std::string_view key,
+                      std::string_view meaning) const;
+  Vec3d read_in_plane_vector(const TomlTableReader& r, std::string_view key, const NumberRule& rule,
+                             Vec3d fallback) const;
+  /// The same check for a vector read some other way (`node` is its array).
+  void check_in_plane(const TomlTableReader& r, std::string_view key, const toml::node& node,
+                      const Vec3d& v) const;
+
+  // case_reader_boundaries.cpp
+  void read_walls();
+  WallSpec read_wall(const toml::table& table, int number) const;
+  std::array<bool, 6> read_faces(const TomlTableReader& r) const;
+  VelocityHistory read_wall_motion(const TomlTableReader& r) const;
+  void check_wall_layers(const TomlTableReader& r, const WallSpec& wall) const;
+  void read_open_boundaries(bool inlet);
+  OpenBoundarySpec read_open_boundary(const toml::table& table, bool inlet, int number);
+  Face read_open_face(const TomlTableReader& r, std::string_view kind) const;
+  void read_open_velocity(const TomlTableReader& r, bool inlet, OpenBoundarySpec& ob) const;
+  void read_profile(const TomlTableReader& r, OpenBoundarySpec& ob) const;
+  void check_buffer(const TomlTableReader& r, const OpenBoundarySpec& ob);
+  void check_face_free(const TomlTableReader& r, const OpenBoundarySpec& ob,
+                       const std::string& label);
+  /// Names are unique among all walls, inlets and outlets.
+  void register_name(const toml::table& table, const std::string& name, std::string_view kind,
+                     const std::string& label, const SourceLocation& where);
+
+  struct NamedEntry {
+    std::string name;
+    std::string label;  ///< "wall[2]"
+    SourceLocation where;
+  };
+
+  const toml::table& root_;
+  const TomlSource& source_;
+  CaseSpec spec_;
+  bool shifting_given_ = false;
+  std::vector<NamedEntry> names_;
+  /// The open boundary on each domain face, if any ("inlet[1]" and its position).
+  std::array<std::optional<NamedEntry>, 6> open_faces_{};
+  /// Buffer width on each domain face with an open boundary (0: none yet).
+  std::array<double, 6> open_widths_{};
+};
+
+}  // namespace netsph::case_detail
