@@ -13,8 +13,16 @@ void log_scene(const Simulation& sim) {
                m.dims, spec.simulation.dp, static_cast<double>(m.kernel.h),
                m.kernel_type == KernelType::Wendland ? "Wendland" : "cubic spline", s.sound_speed,
                static_cast<double>(m.eos.rho0));
-  spdlog::info("particles: {} fluid, {} boundary, {} total", p.count(ParticleKind::Fluid),
-               p.count(ParticleKind::Wall), p.size());
+  spdlog::info("particles: {} fluid, {} wall, {} body, {} open-boundary buffer, {} total",
+               p.count(ParticleKind::Fluid), p.count(ParticleKind::Wall),
+               p.count(ParticleKind::Body), p.count(ParticleKind::Buffer), p.size());
+  for (const auto& b : s.bodies) {
+    spdlog::info("  body {:<12} {:>9} particles, {} , mass {:.4g} kg{}", b.name, b.count,
+                 b.motion == BodyMotion::Fixed
+                     ? "fixed"
+                     : (b.motion == BodyMotion::Floating ? "floating" : "prescribed"),
+                 b.inertia.mass, m.dims == 2 ? "/m" : "");
+  }
   for (const auto& src : s.sources)
     spdlog::info("  {:<16} {:>10} particles", src.name, src.particles);
   spdlog::info("domain [{:.4g}, {:.4g}, {:.4g}] .. [{:.4g}, {:.4g}, {:.4g}] m{}", s.domain_min.x,

@@ -151,8 +151,9 @@ toml::node& entry_of_array(toml::array& array, const std::string& segment,
 /// sound_speed_coef instead of failing with "cannot be combined".
 constexpr std::pair<std::string_view, std::string_view> kAlternatives[] = {
     {"sound_speed", "sound_speed_coef"},
-    {"velocity", "motion"},   // [[wall]]
-    {"velocity", "profile"},  // [[inlet]]
+    {"velocity", "motion"},          // [[wall]]
+    {"velocity", "profile"},         // [[inlet]]
+    {"velocity", "motion_history"},  // [[body]]
 };
 
 void erase_alternatives(toml::table& table, std::string_view key) {

@@ -1,7 +1,7 @@
-// The case-file schema: with case_reader_boundaries.cpp ([[wall]], [[inlet]], [[outlet]]), the
-// only place that maps TOML keys to CaseSpec fields. Each table is read by a TomlTableReader
-// that rejects unknown keys first, then reads and range-checks the keys in a fixed order;
-// cross-key rules (boxes, 2D, domain) come after the keys they use.
+// The case-file schema: with case_reader_boundaries.cpp ([[wall]], [[inlet]], [[outlet]]) and
+// case_reader_bodies.cpp ([[body]]), the only place that maps TOML keys to CaseSpec fields. Each
+// table is read by a TomlTableReader that rejects unknown keys first, then reads and range-checks
+// the keys in a fixed order; cross-key rules (boxes, 2D, domain) come after the keys they use.
 // docs/case-reference.md documents every key; keep the two in step.
 #include <cerrno>
 #include <cmath>
@@ -34,7 +34,21 @@ const std::vector<TableKeys>& schema() {
       {"wall", {"name", "min", "max", "faces", "layers", "model", "slip", "velocity", "motion"}},
       {"inlet", {"name", "face", "layers", "velocity", "profile", "density", "surface_z"}},
       {"outlet", {"name", "face", "layers", "velocity", "density", "surface_z"}},
-      {"output", {"snapshots", "snapshot_every", "series_every"}},
+      {"body", {"name",          "group",
+                "shape",         "size",
+                "thickness",     "width",
+                "height",        "side",
+                "diameter",      "length",
+                "twine_length",  "twine_diameter",
+                "center",        "normal",
+                "axis",          "rotation",
+                "motion",        "density",
+                "mass",          "initial_velocity",
+                "velocity",      "motion_history",
+                "model",         "slip",
+                "layers",        "reference_velocity",
+                "reference_area"}},
+      {"output", {"snapshots", "snapshot_every", "series_every", "force_window"}},
   };
   return tables;
 }
@@ -48,7 +62,8 @@ const std::vector<std::string_view>& keys_of(std::string_view table) {
 }
 
 std::string header_of(std::string_view table) {
-  const bool is_array = table == "fill" || table == "wall" || table == "inlet" || table == "outlet";
+  const bool is_array = table == "fill" || table == "wall" || table == "inlet" ||
+                        table == "outlet" || table == "body";
   return is_array ? fmt::format("[[{}]]", table) : fmt::format("[{}]", table);
 }
 
@@ -108,6 +123,7 @@ CaseSpec CaseReader::read(const std::string& default_name) {
   read_walls();
   read_open_boundaries(true);
   read_open_boundaries(false);
+  read_bodies();
   // Shifting keeps the particle distribution regular where open boundaries add and remove
   // particles; a closed case does without unless asked.
   if (!shifting_given_ && (!spec_.inlets.empty() || !spec_.outlets.empty())) {
@@ -455,6 +471,34 @@ void CaseReader::read_output() {
                              format_number(spec_.simulation.end_time)));
   }
   o.series_every = r.number("series_every", NumberRule::non_negative("s"), o.series_every);
+  read_force_window(r);
+}
+
+void CaseReader::read_force_window(const TomlTableReader& r) {
+  const toml::node* node = r.find("force_window");
+  if (!node) return;
+  const std::vector<double> t =
+      r.to_number_array("force_window", *node, NumberRule::non_negative("s"), 2);
+  const toml::array& array = *node->as_array();
+  if (t.size() != 2) {
+    r.fail_value(
+        "force_window", *node,
+        fmt::format("must be [t0, t1]: a start and an end time in s, got {} elements", t.size()));
+  }
+  if (t[1] <= t[0]) {
+    r.fail_value("force_window", *node,
+                 fmt::format("must have t0 < t1, but t1 = {} <= t0 = {}", format_number(t[1]),
+                             format_number(t[0])),
+                 array.get(1));
+  }
+  const double end_time = spec_.simulation.end_time;
+  if (t[1] > end_time) {
+    r.fail_value("force_window", *node,
+                 fmt::format("t1 = {} must be <= simulation.end_time ({} s)", format_number(t[1]),
+                             format_number(end_time)),
+                 array.get(1));
+  }
+  spec_.output.force_window = std::array<double, 2>{t[0], t[1]};
 }
 
 }  // namespace case_detail

@@ -1,7 +1,8 @@
 #pragma once
 // The case-file schema and the CaseReader class, shared by case_reader.cpp (the top-level
-// tables: [simulation], [fluid], [domain], [[fill]], [output]) and case_reader_boundaries.cpp
-// ([[wall]], [[inlet]], [[outlet]]). Private to the case module (includes toml++).
+// tables: [simulation], [fluid], [domain], [[fill]], [output]), case_reader_boundaries.cpp
+// ([[wall]], [[inlet]], [[outlet]]) and case_reader_bodies.cpp ([[body]]). Private to the
+// case module (includes toml++).
 #include <array>
 #include <optional>
 #include <string>
@@ -78,6 +79,7 @@ class CaseReader {
   FillSpec read_fill(const toml::table& table, int number) const;
   void check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const;
   void read_output();
+  void read_force_window(const TomlTableReader& r);
 
   BoxSpec read_box(const TomlTableReader& r, std::string_view what) const;
   Vec3d read_position(const TomlTableReader& r, std::string_view key,
@@ -102,9 +104,30 @@ class CaseReader {
   void check_buffer(const TomlTableReader& r, const OpenBoundarySpec& ob);
   void check_face_free(const TomlTableReader& r, const OpenBoundarySpec& ob,
                        const std::string& label);
-  /// Names are unique among all walls, inlets and outlets.
+  /// Names are unique among all walls, inlets, outlets and bodies.
   void register_name(const toml::table& table, const std::string& name, std::string_view kind,
                      const std::string& label, const SourceLocation& where);
+
+  // case_reader_bodies.cpp
+  void read_bodies();
+  BodySpec read_body(const toml::table& table, int number) const;
+  void read_body_shape(const TomlTableReader& r, BodySpec& body) const;
+  Quat read_body_orientation(const TomlTableReader& r, const BodySpec& body) const;
+  /// A non-zero direction, normalised; y must be 0 in 2D unless `along_y_in_2d`, which
+  /// requires x = z = 0 instead.
+  Vec3d read_direction(const TomlTableReader& r, std::string_view key, const toml::node& node,
+                       bool along_y_in_2d, std::string_view along_y_reason) const;
+  Quat read_rotation(const TomlTableReader& r) const;
+  void read_body_motion(const TomlTableReader& r, BodySpec& body) const;
+  void read_body_boundary(const TomlTableReader& r, BodySpec& body) const;
+  void read_body_reference(const TomlTableReader& r, BodySpec& body) const;
+  void check_center_in_domain(const TomlTableReader& r, const Vec3d& center) const;
+  /// `velocity_key = [u, v, w]` (constant) or `history_key = { times, velocities }`, which
+  /// exclude each other: the [[wall]] `velocity`/`motion` and [[body]]
+  /// `velocity`/`motion_history` pairs. Empty when neither is given.
+  VelocityHistory read_velocity_history(const TomlTableReader& r, std::string_view velocity_key,
+                                        std::string_view history_key) const;
+  void register_body_name(const toml::table& table, const BodySpec& body, int number);
 
   struct NamedEntry {
     std::string name;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "netsph/core/physics_options.hpp"
+#include "netsph/core/quaternion.hpp"
 #include "netsph/core/vec3.hpp"
 
 namespace netsph {
@@ -124,11 +125,48 @@ struct OpenBoundarySpec {
   SourceLocation where;
 };
 
+/// [[body]]: a rigid body made of boundary particles. The case's shape names map to these:
+///   box {size}                  -> Box, lengths = size
+///   plate {thickness, width, height}, square_plate {side, thickness}
+///                               -> Box, lengths = (thickness, width, height): thickness along the
+///                               normal
+///   circular_plate {diameter, thickness} -> Cylinder of length = thickness along the normal
+///   cylinder {diameter, length} -> Cylinder along `axis`
+///   sphere {diameter}           -> Sphere
+///   cruciform {twine_length, twine_diameter} -> Cruciform facing `normal`
+struct BodySpec {
+  std::string name;        ///< default "body<N>"
+  std::string group;       ///< force group (series.csv columns); default: the name
+  std::string shape_name;  ///< as written in the case, for reports
+  BodyShape shape = BodyShape::Box;
+  Vec3d lengths{};      ///< Box: full lengths in the local frame, m
+  double diameter = 0;  ///< Cylinder, Sphere, Cruciform (twine diameter), m
+  double length = 0;    ///< Cylinder length (local x), Cruciform twine (arm) length, m
+  Vec3d center{};       ///< m
+  /// Local frame -> world frame. Built from `normal` (plates, discs, cruciforms: local x),
+  /// `axis` (cylinders: local x) and an optional extra `rotation`.
+  Quat orientation{};
+  BodyMotion motion = BodyMotion::Fixed;
+  double density = 0;          ///< kg/m^3 (floating; 0 when mass is given)
+  std::optional<double> mass;  ///< kg (kg/m in 2D)
+  Vec3d initial_velocity{};    ///< floating, m/s
+  VelocityHistory velocity;    ///< prescribed translation
+  WallModel model = WallModel::Mdbc;
+  WallSlip slip = WallSlip::WallVelocity;
+  int layers = 0;  ///< shell thickness in particle layers; 0: ceil(2h/dp); -1: solid
+  std::optional<double> reference_velocity;  ///< m/s, for Cd = F / (0.5 rho U^2 A)
+  std::optional<double> reference_area;      ///< m^2 (m in 2D)
+  SourceLocation where;
+};
+
 /// [output]
 struct OutputSpec {
   bool snapshots = true;      ///< write HDF5 + XDMF snapshots
   double snapshot_every = 0;  ///< s; 0: end_time / 50
   double series_every = 0;    ///< s; 0: snapshot_every / 10
+  /// Time window over which summary.json averages body forces and Cd, s; default: the second
+  /// half of the run (force_window = [t0, t1]).
+  std::optional<std::array<double, 2>> force_window;
 };
 
 struct CaseSpec {
@@ -140,6 +178,7 @@ struct CaseSpec {
   std::vector<WallSpec> walls;
   std::vector<OpenBoundarySpec> inlets;
   std::vector<OpenBoundarySpec> outlets;
+  std::vector<BodySpec> bodies;
   OutputSpec output;
 };
 

@@ -20,4 +20,10 @@ enum class ShiftingModel : std::uint8_t { None, Fickian };
 /// How an open boundary's buffer particles get their density.
 enum class BufferDensity : std::uint8_t { Extrapolated, Hydrostatic };
 
+/// The solid of a [[body]], in its own frame (geometry/shapes.hpp has the conventions).
+enum class BodyShape : std::uint8_t { Box, Cylinder, Sphere, Cruciform };
+/// Fixed bodies only measure forces; floating ones move under them; prescribed ones follow a
+/// given velocity.
+enum class BodyMotion : std::uint8_t { Fixed, Floating, Prescribed };
+
 }  // namespace netsph

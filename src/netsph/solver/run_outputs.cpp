@@ -15,16 +15,23 @@ double series_interval(const CaseSpec& spec) {
   return spec.output.series_every > 0 ? spec.output.series_every : snapshot_interval(spec) / 10;
 }
 
+std::array<double, 2> force_window(const CaseSpec& spec) {
+  if (spec.output.force_window) return *spec.output.force_window;
+  return {0.5 * spec.simulation.end_time, spec.simulation.end_time};
+}
+
 GlobalMeasures measure(const Simulation& sim) {
   const ParticleSet& p = sim.particles();
   const double mass = sim.model().mass;
   GlobalMeasures g;
   double ke = 0, vmax2 = 0, rmin = std::numeric_limits<double>::infinity(), rmax = -rmin;
-  std::size_t nf = 0, nw = 0;
+  std::size_t nf = 0, nw = 0, nb = 0;
   const auto n = static_cast<std::int64_t>(p.size());
-#pragma omp parallel for reduction(+ : ke, nf, nw) reduction(max : vmax2, rmax) reduction(min : rmin)
+#pragma omp parallel for reduction(+ : ke, nf, nw, nb) reduction(max : vmax2, rmax) \
+    reduction(min : rmin)
   for (std::int64_t i = 0; i < n; ++i) {
     nw += p.kind[i] == ParticleKind::Wall;
+    nb += p.kind[i] == ParticleKind::Buffer;
     if (!is_fluid(p.kind[i])) continue;
     const double v2 = norm2(Vec3d(p.vel[i]));
     ke += 0.5 * mass * v2;
@@ -35,7 +42,7 @@ GlobalMeasures measure(const Simulation& sim) {
   }
   g.fluid = nf;
   g.walls = nw;
-  g.buffer = p.size() - nf - nw;
+  g.buffer = nb;
   g.kinetic_energy = ke;
   g.fluid_mass = mass * static_cast<double>(nf);
   g.max_speed = std::sqrt(vmax2);
@@ -65,13 +72,23 @@ std::vector<CsvColumn> series_columns(int dims) {
           {"dt_acoustic_limit", "s"},
           {"wall_time", "s"}};
 }
+
+std::vector<CsvColumn> with_force_columns(std::vector<CsvColumn> cols,
+                                          const BodyForceRecorder& forces) {
+  for (auto& c : forces.series_columns()) cols.push_back(std::move(c));
+  return cols;
+}
 }  // namespace
 
 RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots)
     : dir_(std::move(dir)),
+      forces_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
       series_((std::filesystem::create_directories(dir_), dir_ / "series.csv"),
-              series_columns(sim.model().dims)) {
+              with_force_columns(series_columns(sim.model().dims), forces_)) {
   if (snapshots) snapshots_ = std::make_unique<SnapshotWriter>(dir_, "particles");
+  if (!sim.bodies().empty()) {
+    bodies_csv_ = std::make_unique<CsvSeries>(dir_ / "bodies.csv", body_state_columns());
+  }
   snapshot_every_ = snapshot_interval(sim.spec());
   series_every_ = series_interval(sim.spec());
   next_snapshot_ = sim.time();
@@ -97,24 +114,26 @@ void RunOutputs::write_snapshot(const Simulation& sim) {
 void RunOutputs::write_series_row(const Simulation& sim, double wall_s) {
   const GlobalMeasures g = measure(sim);
   const auto& d = sim.diagnostics();
-  const double row[] = {sim.time(),
-                        sim.steps() > 0 ? sim.last_dt() : 0.0,
-                        static_cast<double>(sim.steps()),
-                        static_cast<double>(g.fluid),
-                        static_cast<double>(g.walls),
-                        static_cast<double>(g.buffer),
-                        static_cast<double>(d.lost_total),
-                        static_cast<double>(d.open.entered_fluid),
-                        static_cast<double>(d.open.removed),
-                        g.kinetic_energy,
-                        g.fluid_mass,
-                        g.max_speed,
-                        g.min_density,
-                        g.max_density,
-                        d.dt_limits.force,
-                        d.dt_limits.acoustic,
-                        wall_s};
+  std::vector<double> row = {sim.time(),
+                             sim.steps() > 0 ? sim.last_dt() : 0.0,
+                             static_cast<double>(sim.steps()),
+                             static_cast<double>(g.fluid),
+                             static_cast<double>(g.walls),
+                             static_cast<double>(g.buffer),
+                             static_cast<double>(d.lost_total),
+                             static_cast<double>(d.open.entered_fluid),
+                             static_cast<double>(d.open.removed),
+                             g.kinetic_energy,
+                             g.fluid_mass,
+                             g.max_speed,
+                             g.min_density,
+                             g.max_density,
+                             d.dt_limits.force,
+                             d.dt_limits.acoustic,
+                             wall_s};
+  forces_.append_series_values(sim, row);
   series_.append(row);
+  if (bodies_csv_) append_body_rows(sim, *bodies_csv_);
   last_series_step_ = sim.steps();
 }
 

@@ -2,6 +2,7 @@
 // The files a run writes into its output folder:
 //   particles.xdmf + snapshots/*.h5   fluid and boundary particles (ParaView)
 //   series.csv                        global quantities over time, one row per series interval
+//   bodies.csv                        rigid bodies' states and forces (solver/body_forces.hpp)
 //   summary.json                      the run as a whole (rewritten atomically, also on failure)
 #include <filesystem>
 #include <memory>
@@ -10,6 +11,7 @@
 
 #include "netsph/io/csv_series.hpp"
 #include "netsph/io/snapshot_writer.hpp"
+#include "netsph/solver/body_forces.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph {
@@ -33,6 +35,10 @@ class RunOutputs {
   void maybe_write(const Simulation& sim, double wall_s);
   /// Writes the final snapshot and series row unless this exact step was written already.
   void write_final(const Simulation& sim, double wall_s);
+  /// Called after every step: time averages of body forces.
+  void after_step(const Simulation& sim) { forces_.accumulate(sim); }
+  /// Body force averages for summary.json (an empty array without bodies).
+  nlohmann::json body_summary() const { return forces_.summary(); }
 
   int snapshots_written() const { return snapshots_ ? snapshots_->count() : 0; }
   const std::filesystem::path& dir() const { return dir_; }
@@ -43,7 +49,9 @@ class RunOutputs {
 
   std::filesystem::path dir_;
   std::unique_ptr<SnapshotWriter> snapshots_;
+  BodyForceRecorder forces_;  // before series_: it adds series columns
   CsvSeries series_;
+  std::unique_ptr<CsvSeries> bodies_csv_;
   double snapshot_every_ = 0, series_every_ = 0;
   double next_snapshot_ = 0, next_series_ = 0;
   std::int64_t last_snapshot_step_ = -1, last_series_step_ = -1;
@@ -52,5 +60,7 @@ class RunOutputs {
 /// Intervals after defaults: snapshot_every 0 -> end_time / 50; series_every 0 -> snapshot / 10.
 double snapshot_interval(const CaseSpec& spec);
 double series_interval(const CaseSpec& spec);
+/// The force-averaging window: output.force_window, or the second half of the run.
+std::array<double, 2> force_window(const CaseSpec& spec);
 
 }  // namespace netsph

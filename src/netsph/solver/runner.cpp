@@ -42,7 +42,8 @@ std::vector<std::string> collect_warnings(const Simulation& sim) {
   return w;
 }
 
-nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const RunOptions& opt) {
+nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const RunOptions& opt,
+                            const RunOutputs& outputs) {
   const CaseSpec& s = sim.spec();
   const GlobalMeasures g = measure(sim);
   nlohmann::json j;
@@ -82,6 +83,7 @@ nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const Run
                   {"snapshots", r.snapshots},
                   {"xdmf", r.snapshots > 0 ? "particles.xdmf" : ""},
                   {"series", "series.csv"}};
+  j["bodies"] = outputs.body_summary();
   j["warnings"] = r.warnings;
   return j;
 }
@@ -123,6 +125,7 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
       }
       particle_steps += static_cast<double>(sim.particles().size());
       sim.step();
+      outputs.after_step(sim);
       if (sim.diagnostics().lost_total > 0 && !warned_lost) {
         spdlog::warn(
             "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
@@ -152,7 +155,8 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
     r.warnings.push_back(std::string("final output failed: ") + e.what());
   }
   r.snapshots = outputs.snapshots_written();
-  write_file_atomic(opt.out_dir / "summary.json", summary_json(sim, r, opt).dump(2) + "\n");
+  write_file_atomic(opt.out_dir / "summary.json",
+                    summary_json(sim, r, opt, outputs).dump(2) + "\n");
   return r;
 }
 

@@ -18,6 +18,20 @@ LatticeBox lattice_box(const BoxSpec& b, int dims) {
   return {b.min, b.max, dims};
 }
 
+const char* kind_name(ParticleKind k) {
+  switch (k) {
+    case ParticleKind::Fluid:
+      return "fill";
+    case ParticleKind::Wall:
+      return "wall";
+    case ParticleKind::Buffer:
+      return "open-boundary buffer";
+    case ParticleKind::Body:
+      return "body";
+  }
+  return "particle";
+}
+
 /// Free-surface height of a fill: given, or the top of its particle lattice.
 double surface_of(const FillSpec& f, double dp, int dims) {
   return f.surface_z ? *f.surface_z : lattice_max(lattice_box(f.box, dims), dp).z;
@@ -162,6 +176,7 @@ Scene build_scene(const CaseSpec& spec) {
     }
     scene.sources.push_back({w.name, pts.size()});
   }
+  add_bodies(spec, scene);
   std::vector<std::size_t> buffer_count(scene.zones.size(), 0);
   for (std::size_t i = 0; i < spec.fills.size(); ++i) {
     const auto& f = spec.fills[i];
@@ -191,6 +206,7 @@ Scene build_scene(const CaseSpec& spec) {
     scene.sources.push_back({scene.zones[z].name + " (buffer)", buffer_count[z]});
   }
   if (p.size() == 0) throw Error(spec.source, "the case creates no particles");
+  scene.removed_in_bodies = remove_fluid_in_bodies(spec, scene);
 
   // Bounding box of the particles, for the default domain and the overlap search.
   Vec3d lo = p.pos[0], hi = p.pos[0];
@@ -210,8 +226,7 @@ Scene build_scene(const CaseSpec& spec) {
         throw Error(spec.source,
                     fmt::format("a {} particle at ({:.4g}, {:.4g}, {:.4g}) m lies outside "
                                 "[domain]; enlarge the domain or move the {}",
-                                is_fluid(p.kind[i]) ? "fluid" : "wall", x.x, x.y, x.z,
-                                is_fluid(p.kind[i]) ? "fill" : "wall"));
+                                kind_name(p.kind[i]), x.x, x.y, x.z, kind_name(p.kind[i])));
       }
     }
   } else {

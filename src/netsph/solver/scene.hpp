@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "netsph/bodies/rigid_body.hpp"
 #include "netsph/boundary/open_boundary.hpp"
 #include "netsph/case/case_spec.hpp"
 #include "netsph/sph/fluid_model.hpp"
@@ -23,14 +24,22 @@ struct Scene {
   double fluid_depth = 0;  ///< deepest fill, m (used for c0 = coef sqrt(g H))
   Vec3d domain_min{}, domain_max{};
   std::vector<OpenBoundaryZone> zones;  ///< inlets, then outlets (buffer particles' group)
+  std::vector<RigidBody> bodies;        ///< body particles' group indexes this
   std::vector<SceneSource> sources;
-  std::size_t removed_overlaps = 0;  ///< fluid particles dropped for sitting on another particle
+  std::size_t removed_overlaps = 0;   ///< fluid particles dropped for sitting on another particle
+  std::size_t removed_in_bodies = 0;  ///< fluid particles dropped for lying inside a body
   std::vector<std::string> warnings;
 };
 
 /// Builds the particles (walls first, then fills in file order) with hydrostatic density.
 /// Throws netsph::Error naming the case item when something cannot be built.
 Scene build_scene(const CaseSpec& spec);
+
+/// Adds the [[body]] particles (solver/scene_bodies.cpp) and fills in scene.bodies.
+void add_bodies(const CaseSpec& spec, Scene& scene);
+
+/// Removes fluid particles inside a body or closer than dp/2 to its surface; returns how many.
+std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene);
 
 /// The fluid model of a case for a given sound speed.
 FluidModel fluid_model_for(const CaseSpec& spec, double sound_speed);

@@ -31,6 +31,80 @@ Simulation::Simulation(const CaseSpec& spec)
                                                   : default_shifting_threshold(m.dims));
   shift_params_.dims = static_cast<Real>(m.dims);
   shift_params_.max_component = static_cast<Real>(0.1 * spec.simulation.dp);
+  contact_model_ = ContactModel::make(spec.simulation.dp, scene_.sound_speed);
+}
+
+Vec3f Simulation::body_point_velocity(std::size_t i) const {
+  const RigidBody& b = scene_.bodies[p_.group[i]];
+  return Vec3f(rigid_point_velocity(b.state, p_.pos[i] - b.state.com));
+}
+
+double Simulation::place_body_particles(bool from_step_start) {
+  auto& bodies = scene_.bodies;
+  if (bodies.empty()) return 0;
+  const auto n = static_cast<std::int64_t>(p_.size());
+  double max_d2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : max_d2)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p_.kind[i] != ParticleKind::Body) continue;
+    const RigidBody& b = bodies[p_.group[i]];
+    const std::uint32_t k = p_.id[i] - b.first_id;
+    const Vec3d r = rotate(b.state.q, Vec3d(b.offsets[k]));
+    p_.pos[i] = b.state.com + r;
+    if (b.shows_own_velocity()) p_.vel[i] = Vec3f(rigid_point_velocity(b.state, r));
+    p_.ghost[i] = Vec3f(rotate(b.state.q, Vec3d(b.ghosts[k])));
+    if (from_step_start) max_d2 = std::max(max_d2, norm2(p_.pos[i] - start_.pos[i]));
+  }
+  return std::sqrt(max_d2);
+}
+
+void Simulation::reduce_body_forces() {
+  auto& bodies = scene_.bodies;
+  if (bodies.empty()) return;
+  for (auto& b : bodies) {
+    b.fluid_force = b.fluid_torque = b.contact_force = b.contact_torque = {};
+  }
+  const double m = scene_.model.mass;
+  // Serial over particles in sorted order: the sums do not depend on the thread count.
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (p_.kind[i] != ParticleKind::Body) continue;
+    RigidBody& b = bodies[p_.group[i]];
+    const Vec3d r = p_.pos[i] - b.state.com;
+    const Vec3d f = Vec3d(acc_[i]) * m, fc = Vec3d(contact_[i]) * m;
+    b.fluid_force += f;
+    b.fluid_torque += cross(r, f);
+    b.contact_force += fc;
+    b.contact_torque += cross(r, fc);
+  }
+}
+
+void Simulation::advance_bodies(bool corrector, double dt) {
+  const Vec3d g = spec_.fluid.gravity;
+  for (std::size_t bi = 0; bi < scene_.bodies.size(); ++bi) {
+    RigidBody& b = scene_.bodies[bi];
+    if (!corrector) b.start = b.state;
+    switch (b.motion) {
+      case BodyMotion::Fixed:
+        break;
+      case BodyMotion::Prescribed: {
+        // As the fluid: half step with the start velocity, full step by the trapezoid rule
+        // (exact for a velocity linear in time over the step).
+        const VelocityHistory& v = spec_.bodies[bi].velocity;
+        const Vec3d v0 = v.at(time_), v1 = v.at(time_ + (corrector ? dt : 0.5 * dt));
+        b.state.com =
+            corrector ? b.start.com + (v0 + v1) * (0.5 * dt) : b.start.com + v0 * (0.5 * dt);
+        b.state.vel = v1;
+        break;
+      }
+      case BodyMotion::Floating: {
+        const Vec3d force = b.fluid_force + b.contact_force + b.external_force;
+        const Vec3d torque = b.fluid_torque + b.contact_torque + b.external_torque;
+        const RigidAcceleration a = rigid_acceleration(b.inertia, b.state, force, torque, g);
+        b.state = corrector ? rigid_correct(b.start, a, dt) : rigid_predict(b.start, a, dt);
+        break;
+      }
+    }
+  }
 }
 
 void Simulation::sort_particles(bool mid_step) {
@@ -143,36 +217,43 @@ void Simulation::apply_mdbc() {
   ghost_targets_.clear();
   ghost_points_.clear();
   for (std::uint32_t i = 0; i < p_.size(); ++i) {
-    if (p_.kind[i] != ParticleKind::Wall) continue;
-    const std::uint32_t w = p_.group[i];
     const Vec3f& g = p_.ghost[i];
-    if (spec_.walls[w].model == WallModel::Mdbc && (g.x != 0 || g.y != 0 || g.z != 0)) {
-      ghost_targets_.push_back(i);
+    const bool has_ghost = g.x != 0 || g.y != 0 || g.z != 0;
+    if (p_.kind[i] == ParticleKind::Wall) {
+      const std::uint32_t w = p_.group[i];
+      if (spec_.walls[w].model == WallModel::Mdbc && has_ghost) {
+        ghost_targets_.push_back(i);
+        ghost_points_.push_back(p_.pos[i] + Vec3d(g));
+      } else if (walls_[w].shows_own_velocity) {
+        p_.vel[i] = walls_[w].start;
+      }
+    } else if (p_.kind[i] == ParticleKind::Body && has_ghost) {
+      ghost_targets_.push_back(i);  // body ghosts are zero unless the body uses mDBC
       ghost_points_.push_back(p_.pos[i] + Vec3d(g));
-    } else if (walls_[w].shows_own_velocity) {
-      p_.vel[i] = walls_[w].start;
     }
   }
   if (ghost_targets_.empty()) return;
   std::atomic<std::size_t> fallbacks{0};
-  for_each_ghost_value(scene_.model, grid_, p_, ghost_points_, GhostSources::FluidAndBuffer,
-                       [&](std::size_t k, const GhostValue& g) {
-                         const std::uint32_t i = ghost_targets_[k];
-                         const WallSpec& w = spec_.walls[p_.group[i]];
-                         if (g.any && !g.first_order)
-                           fallbacks.fetch_add(1, std::memory_order_relaxed);
-                         const WallState s = mdbc_wall_state(g, p_.ghost[i], scene_.model.eos.rho0,
-                                                             w.slip, walls_[p_.group[i]].start);
-                         p_.rho[i] = s.rho;
-                         p_.vel[i] = s.vel;
-                       });
+  for_each_ghost_value(
+      scene_.model, grid_, p_, ghost_points_, GhostSources::FluidAndBuffer,
+      [&](std::size_t k, const GhostValue& g) {
+        const std::uint32_t i = ghost_targets_[k];
+        const bool wall = p_.kind[i] == ParticleKind::Wall;
+        const WallSlip slip =
+            wall ? spec_.walls[p_.group[i]].slip : scene_.bodies[p_.group[i]].slip;
+        const Vec3f v_solid = wall ? walls_[p_.group[i]].start : body_point_velocity(i);
+        if (g.any && !g.first_order) fallbacks.fetch_add(1, std::memory_order_relaxed);
+        const WallState s = mdbc_wall_state(g, p_.ghost[i], scene_.model.eos.rho0, slip, v_solid);
+        p_.rho[i] = s.rho;
+        p_.vel[i] = s.vel;
+      });
   diag_.mdbc_fallbacks = fallbacks.load();
 }
 
 void Simulation::fail_non_finite(std::int64_t i) const {
   const Vec3d x = p_.pos[i];
   const Vec3f v = p_.vel[i];
-  static const char* kind_name[] = {"fluid", "wall", "buffer"};
+  static const char* kind_name[] = {"fluid", "wall", "buffer", "body"};
   throw SimulationUnstable(
       "solver",
       fmt::format("non-finite state at t = {:.6g} s (step {}): particle id {} ({}) at ({:.4g}, "
@@ -195,17 +276,23 @@ void Simulation::step() {
   diag_.lost_total -= ob.removed;  // left through an outlet: not lost
 
   update_wall_kinematics(0.0);  // velocities at t for the boundary state
+  place_body_particles(false);
   apply_open_boundary_state();
   apply_mdbc();
 
+  const bool bodies = !scene_.bodies.empty();
   build_view();
   const RateReductions r0 = compute_rates(m, grid_, view_, p_.kind, acc_, drho_);
+  if (bodies) compute_contacts(contact_model_, grid_, view_, p_.kind, contact_);
   const double dt = compute_dt(r0);
   update_wall_kinematics(dt);
   const StageInputs in{acc_, drho_, dt, walls_};
 
   start_.save(p_);
-  const double moved = symplectic_predictor(p_, start_, in, m);
+  reduce_body_forces();
+  advance_bodies(false, dt);
+  double moved = symplectic_predictor(p_, start_, in, m);
+  moved = std::max(moved, place_body_particles(true));
   if (moved > grid_.max_displacement()) {
     sort_particles(true);
     ++diag_.resorts;
@@ -213,8 +300,14 @@ void Simulation::step() {
 
   build_view();
   compute_rates(m, grid_, view_, p_.kind, acc_, drho_, shift_on_ ? &shift_sums_ : nullptr);
+  if (bodies) {
+    compute_contacts(contact_model_, grid_, view_, p_.kind, contact_);
+    reduce_body_forces();
+    advance_bodies(true, dt);
+  }
   const std::int64_t bad =
       symplectic_corrector(p_, start_, in, m, shift_on_ ? &shift_sums_ : nullptr, &shift_params_);
+  place_body_particles(false);
   time_ += dt;
   ++steps_;
   if (bad >= 0) fail_non_finite(bad);
@@ -240,7 +333,8 @@ double Simulation::bytes_per_particle() const {
       scratch_f_.capacity() * sizeof(Real) + scratch_kind_.capacity() +
       scratch_u32_.capacity() * sizeof(std::uint32_t) +
       shift_sums_.grad_c.capacity() * sizeof(Vec3f) + shift_sums_.div_r.capacity() * sizeof(Real) +
-      ghost_targets_.capacity() * sizeof(std::uint32_t) + ghost_points_.capacity() * sizeof(Vec3d);
+      ghost_targets_.capacity() * sizeof(std::uint32_t) + ghost_points_.capacity() * sizeof(Vec3d) +
+      contact_.capacity() * sizeof(Vec3f);
   return static_cast<double>(bytes) / n;
 }
 

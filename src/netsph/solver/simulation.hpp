@@ -5,10 +5,10 @@
 //   step():  open boundaries: buffer -> fluid, new inlet particles, outflow removed
 //            wrap periodic axes; sort by cell (drops particles that left the domain)
 //            open-boundary buffer state (imposed / extrapolated); mDBC wall state
-//            view of state n  -> rates a^n, drho^n  -> dt (CFL)
-//            save state n     -> predictor (half step)
+//            view of state n  -> rates a^n, drho^n (+ body contacts)  -> dt (CFL)
+//            save state n     -> body forces -> predictor (half step), bodies included
 //            [re-sort if the half step moved a particle past the grid skin]
-//            view of half step -> rates (+ shifting sums) -> corrector (full step, shifting)
+//            view of half step -> rates (+ shifting sums) -> body forces -> corrector
 //            checks: non-finite state, dt below the floor
 //
 // run() adds the outputs (snapshots, series.csv, summary.json) and the progress display.
@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "netsph/backend/cpu/contact.hpp"
 #include "netsph/backend/cpu/ghost_pass.hpp"
 #include "netsph/backend/cpu/integrate.hpp"
 #include "netsph/backend/cpu/interaction_view.hpp"
@@ -58,6 +59,8 @@ class Simulation {
   const FluidModel& model() const { return scene_.model; }
   const CellGrid& grid() const { return grid_; }
   const ParticleSet& particles() const { return p_; }
+  const std::vector<RigidBody>& bodies() const { return scene_.bodies; }
+  std::vector<RigidBody>& bodies() { return scene_.bodies; }
   ParticleSet& particles() { return p_; }
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
@@ -78,6 +81,14 @@ class Simulation {
   void update_wall_kinematics(double dt);
   void apply_open_boundary_state();
   void apply_mdbc();
+  /// Positions (and, where they show it, velocities) and ghost vectors of body particles from
+  /// the bodies' states; returns the largest body-particle displacement from the step start.
+  double place_body_particles(bool from_step_start);
+  /// Fluid and contact force and torque on every body from the last rates pass.
+  void reduce_body_forces();
+  /// Advances every body's state to the half step (predictor) or the full step.
+  void advance_bodies(bool corrector, double dt);
+  Vec3f body_point_velocity(std::size_t i) const;
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
 
   CaseSpec spec_;
@@ -90,6 +101,8 @@ class Simulation {
   std::vector<Real> drho_;
   std::vector<std::uint32_t> order_;
   std::vector<WallKinematics> walls_;  // by wall index
+  ContactModel contact_model_;
+  std::vector<Vec3f> contact_;  // contact acceleration of body particles
   bool shift_on_ = false;
   ShiftingParams shift_params_;
   ShiftingSums shift_sums_;

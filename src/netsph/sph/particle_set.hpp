@@ -15,6 +15,7 @@ enum class ParticleKind : std::uint8_t {
   Fluid = 0,
   Wall = 1,    ///< boundary particle of a wall (DBC or mDBC); `group` = wall index
   Buffer = 2,  ///< open-boundary buffer particle; `group` = zone index (inlets, then outlets)
+  Body = 3,    ///< boundary particle of a rigid body; `group` = body index
 };
 
 /// Particles the momentum and continuity equations move.
@@ -23,7 +24,11 @@ inline bool is_fluid(ParticleKind k) {
 }
 /// Particles that carry fluid state as neighbours (fluid and open-boundary buffers).
 inline bool carries_fluid(ParticleKind k) {
-  return k != ParticleKind::Wall;
+  return k == ParticleKind::Fluid || k == ParticleKind::Buffer;
+}
+/// Boundary particles: walls and bodies.
+inline bool is_solid(ParticleKind k) {
+  return k == ParticleKind::Wall || k == ParticleKind::Body;
 }
 
 struct ParticleSet {

@@ -36,7 +36,7 @@ GhostValue ghost_value_at(const FluidModel& m, const CellGrid& grid, const Parti
     const Vec3d shift(ranges[k].shift);
     for (std::uint32_t j = ranges[k].begin; j < ranges[k].end; ++j) {
       const ParticleKind kind = p.kind[j];
-      if (kind == ParticleKind::Wall) continue;
+      if (is_solid(kind)) continue;
       if (sources == GhostSources::FluidOnly && kind != ParticleKind::Fluid) continue;
       const Vec3f d(p.pos[j] + shift - ghost);
       const Real r2 = norm2(d);

@@ -37,6 +37,11 @@ double symplectic_predictor(ParticleSet& p, const StepStart& s, const StageInput
       case ParticleKind::Buffer:
         p.pos[i] = s.pos[i] + Vec3d(s.vel[i]) * (0.5 * dt);
         break;
+      case ParticleKind::Body:
+        // Position and velocity follow the rigid body (Simulation::place_body_particles).
+        p.rho[i] =
+            clamp_boundary_density(symplectic_density_half(s.rho[i], in.drho[i], dt), m.eos.rho0);
+        break;
     }
     max_d2 = std::max(max_d2, norm2(p.pos[i] - s.pos[i]));
   }
@@ -75,6 +80,11 @@ std::int64_t symplectic_corrector(ParticleSet& p, const StepStart& s, const Stag
       case ParticleKind::Buffer:
         p.pos[i] = s.pos[i] + Vec3d(s.vel[i]) * dt;
         break;
+      case ParticleKind::Body: {
+        const Real rho_new = symplectic_density_full(s.rho[i], in.drho[i], p.rho[i], dt);
+        p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);
+        break;
+      }
     }
     const bool finite = std::isfinite(p.pos[i].x) && std::isfinite(p.pos[i].y) &&
                         std::isfinite(p.pos[i].z) && std::isfinite(p.vel[i].x) &&

@@ -5,6 +5,7 @@ namespace netsph {
 void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin) {
   const auto n = static_cast<std::int64_t>(p.size());
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &rho, &press, &fluid}) v->resize(p.size());
+  solid.resize(p.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     x[i] = static_cast<Real>(p.pos[i].x - origin.x);
@@ -14,6 +15,10 @@ void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec
     rho[i] = p.rho[i];
     press[i] = m.eos.pressure(p.rho[i]);
     fluid[i] = carries_fluid(p.kind[i]) ? Real(1) : Real(0);
+    solid[i] =
+        p.kind[i] == ParticleKind::Wall
+            ? kWallSolid
+            : (p.kind[i] == ParticleKind::Body ? static_cast<std::int32_t>(p.group[i]) : kNotSolid);
   }
 }
 

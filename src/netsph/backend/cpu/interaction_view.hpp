@@ -17,10 +17,16 @@ struct InteractionView {
   std::vector<Real> x, y, z;
   std::vector<Real> vx, vy, vz;
   std::vector<Real> rho, press;
-  std::vector<Real> fluid;  ///< 1 for fluid and buffer particles, 0 for wall particles
+  std::vector<Real> fluid;  ///< 1 for fluid and buffer particles, 0 for wall and body particles
+  /// Which solid a particle belongs to: kNotSolid (fluid, buffer), kWallSolid, or the body
+  /// index; body particles make contact with particles of other solids.
+  std::vector<std::int32_t> solid;
+  static constexpr std::int32_t kNotSolid = -1, kWallSolid = -2;
 
   void build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin);
-  std::size_t bytes() const { return 9 * x.capacity() * sizeof(Real); }
+  std::size_t bytes() const {
+    return 9 * x.capacity() * sizeof(Real) + solid.capacity() * sizeof(std::int32_t);
+  }
 };
 
 }  // namespace netsph

@@ -100,6 +100,42 @@ inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::ui
   return out;
 }
 
+/// Body particle a: pressure and viscous force from fluid and buffer neighbours only (the
+/// body's share of the pairwise forces, so the fluid gets exactly the opposite), and
+/// continuity from them. Walls and other bodies act through contact (backend/cpu/contact).
+template <class Kernel, ViscosityModel Visc>
+inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
+                          const NeighbourRanges& ranges, int nranges) {
+  const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
+  const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
+  const Real rho_a = v.rho[a], press_a = v.press[a];
+  Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
+  for (int k = 0; k < nranges; ++k) {
+    const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
+    const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
+               zs = za - ranges[k].shift.z;
+#pragma omp simd reduction(+ : ax, ay, az, dr) reduction(max : vdt)
+    for (std::uint32_t b = b0; b < b1; ++b) {
+      const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
+      const Real r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < m.support2 && v.fluid[b] > Real(0)) {
+        const Neighbour nb{{dx, dy, dz}, r2,         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
+                           v.rho[b],     v.press[b], m.mass,
+                           v.fluid[b]};
+        RateSums s;
+        fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a, nb, s);
+        ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
+        vdt = std::max(vdt, s.visc_dt);
+      }
+    }
+  }
+  RateSums out;
+  out.acc = {ax, ay, az};
+  out.drho = dr;
+  out.visc_dt = vdt;
+  return out;
+}
+
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 RateReductions rates_loop(const FluidModel& m, const CellGrid& grid, const InteractionView& v,
                           std::span<const ParticleKind> kind, std::vector<Vec3f>& acc,
@@ -136,6 +172,13 @@ RateReductions rates_loop(const FluidModel& m, const CellGrid& grid, const Inter
           acc[a] = {};
           drho[a] = 0;
           break;
+        case ParticleKind::Body: {
+          const RateSums s = body_sums<Kernel, Visc>(m, v, a, ranges, nranges);
+          acc[a] = s.acc;  // no gravity: the body's weight acts on its centre of mass
+          drho[a] = s.drho;
+          max_visc = std::max(max_visc, static_cast<double>(s.visc_dt));
+          break;
+        }
       }
     }
   }

@@ -23,8 +23,9 @@ struct ShiftingSums {
   std::vector<Real> div_r;    ///< -sum_b V_b r_ab . grad_a W_ab (2 or 3 inside the fluid)
 };
 
-/// Fills acc (fluid particles: with gravity; others: zero) and drho (fluid and walls; zero for
-/// buffer particles, whose state the open boundaries impose). `shifting` may be null.
+/// Fills acc (fluid particles: with gravity; body particles: the fluid's force per unit mass,
+/// no gravity; others: zero) and drho (zero for buffer particles, whose state the open
+/// boundaries impose). `shifting` may be null.
 RateReductions compute_rates(const FluidModel& m, const CellGrid& grid, const InteractionView& v,
                              std::span<const ParticleKind> kind, std::vector<Vec3f>& acc,
                              std::vector<Real>& drho, ShiftingSums* shifting = nullptr);

@@ -1,0 +1,60 @@
+#pragma once
+// Solid shapes in their own (local) frame, centred at the origin, for rigid bodies: inside
+// test, the nearest point of the surface (for mDBC ghost nodes), volume and inertia.
+// Conventions of the local frame:
+//   box        lengths (lx, ly, lz) along x, y, z (plates: the thickness along x)
+//   cylinder   axis along local x (discs: a short cylinder, face normal x)
+//   sphere     radius
+//   cruciform  two cylinders of the same radius crossing at the origin, arms along local y
+//              and z, each `length` long: a net's cruciform element seen by a flow along x
+// In 2D the shapes are cut by the plane y = 0 (the simulation plane is x-z).
+#include <vector>
+
+#include "netsph/core/vec3.hpp"
+
+namespace netsph {
+
+enum class ShapeType { Box, Cylinder, Sphere, Cruciform };
+
+struct Shape {
+  ShapeType type = ShapeType::Box;
+  Vec3d half{};  ///< box: half lengths; cylinder: half length in x; cruciform: half arm length in
+                 ///< y, z
+  double radius = 0;  ///< cylinder, sphere, cruciform
+
+  static Shape box(const Vec3d& lengths) { return {ShapeType::Box, lengths * 0.5, 0}; }
+  static Shape cylinder(double diameter, double length) {
+    return {ShapeType::Cylinder, {0.5 * length, 0, 0}, 0.5 * diameter};
+  }
+  static Shape sphere(double diameter) { return {ShapeType::Sphere, {}, 0.5 * diameter}; }
+  static Shape cruciform(double twine_length, double twine_diameter) {
+    return {
+        ShapeType::Cruciform, {0, 0.5 * twine_length, 0.5 * twine_length}, 0.5 * twine_diameter};
+  }
+
+  bool inside(const Vec3d& p) const;
+  /// The point of the surface nearest to p (p inside the shape, or near it).
+  Vec3d nearest_surface_point(const Vec3d& p) const;
+  /// Distance from an inside point to the surface.
+  double depth(const Vec3d& p) const { return norm(nearest_surface_point(p) - p); }
+  /// Half extents of the bounding box.
+  Vec3d bounding_half() const;
+  /// Volume, m^3 (3D) or area of the y = 0 section, m^2 (2D).
+  double measure(int dims) const;
+  /// Principal moments of inertia per unit density about the centre (local axes are principal
+  /// for every shape here), kg m^2 / (kg/m^3); in 2D only the y component (about the normal
+  /// of the plane) is meaningful, per unit depth.
+  Vec3d inertia_per_density(int dims) const;
+};
+
+/// Body particles in the local frame: a dp lattice along the given local-frame unit axes (3 in
+/// 3D: the local axes, body-fitted; 2 in 2D: the local directions of world x and z, so the
+/// lattice lies in the simulation plane), centred on the shape and offset by dp/2 along axes
+/// with an even number of layers (a box of n dp holds n layers exactly). Keeps the points at
+/// least dp/2 inside the surface (the mDBC convention: the surface lies dp/2 beyond the outer
+/// particle layer) and, when shell_layers > 0, at most shell_layers dp deep (particles deeper
+/// than the kernel support never meet the fluid).
+std::vector<Vec3d> body_lattice(const Shape& s, double dp, int shell_layers,
+                                const std::vector<Vec3d>& axes);
+
+}  // namespace netsph

@@ -1,0 +1,132 @@
+#include "netsph/solver/body_forces.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace netsph {
+
+std::vector<ForceGroup> force_groups(const Simulation& sim) {
+  std::vector<ForceGroup> groups;
+  std::map<std::string, std::size_t> index;
+  const auto& bodies = sim.bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const auto [it, added] = index.emplace(bodies[b].group, groups.size());
+    if (added) groups.push_back({bodies[b].group, {}, {}, {}, {}});
+    ForceGroup& g = groups[it->second];
+    g.bodies.push_back(b);
+    const BodySpec& spec = sim.spec().bodies[b];
+    if (!g.reference_velocity && spec.reference_velocity) {
+      g.reference_velocity = spec.reference_velocity;
+      g.reference_area = spec.reference_area;
+    }
+  }
+  for (auto& g : groups) {
+    for (std::size_t b : g.bodies) g.reference_point += bodies[b].state.com;
+    g.reference_point = g.reference_point / static_cast<double>(g.bodies.size());
+  }
+  return groups;
+}
+
+GroupLoad group_load(const Simulation& sim, const ForceGroup& g) {
+  GroupLoad load;
+  for (std::size_t b : g.bodies) {
+    const RigidBody& body = sim.bodies()[b];
+    load.force += body.fluid_force;
+    load.moment += body.fluid_torque + cross(body.state.com - g.reference_point, body.fluid_force);
+  }
+  if (g.reference_velocity && g.reference_area) {
+    const double u = *g.reference_velocity;
+    load.cd = load.force.x / (0.5 * sim.model().eos.rho0 * u * u * *g.reference_area);
+  }
+  return load;
+}
+
+BodyForceRecorder::BodyForceRecorder(const Simulation& sim, double window_start, double window_end)
+    : groups_(force_groups(sim)), t0_(window_start), t1_(window_end), sums_(groups_.size()) {}
+
+std::vector<CsvColumn> BodyForceRecorder::series_columns() const {
+  std::vector<CsvColumn> cols;
+  for (const auto& g : groups_) {
+    for (const char* c : {"Fx", "Fy", "Fz"}) cols.push_back({g.name + "_" + c, "N"});
+    for (const char* c : {"Mx", "My", "Mz"}) cols.push_back({g.name + "_" + c, "N m"});
+    if (g.reference_velocity) cols.push_back({g.name + "_Cd", ""});
+  }
+  return cols;
+}
+
+void BodyForceRecorder::append_series_values(const Simulation& sim,
+                                             std::vector<double>& row) const {
+  for (const auto& g : groups_) {
+    const GroupLoad l = group_load(sim, g);
+    for (int a = 0; a < 3; ++a) row.push_back(l.force[a]);
+    for (int a = 0; a < 3; ++a) row.push_back(l.moment[a]);
+    if (g.reference_velocity) row.push_back(l.cd);
+  }
+}
+
+void BodyForceRecorder::accumulate(const Simulation& sim) {
+  const double t = sim.time(), dt = sim.last_dt();
+  if (t < t0_ || t > t1_ || !(dt > 0)) return;
+  for (std::size_t k = 0; k < groups_.size(); ++k) {
+    const GroupLoad l = group_load(sim, groups_[k]);
+    sums_[k].force += l.force * dt;
+    sums_[k].moment += l.moment * dt;
+    sums_[k].cd += l.cd * dt;
+  }
+  weight_ += dt;
+}
+
+nlohmann::json BodyForceRecorder::summary() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t k = 0; k < groups_.size(); ++k) {
+    const ForceGroup& g = groups_[k];
+    nlohmann::json j;
+    j["group"] = g.name;
+    j["bodies"] = g.bodies.size();
+    j["window_s"] = {t0_, t1_};
+    j["averaged_over_s"] = weight_;
+    if (weight_ > 0) {
+      const Vec3d f = sums_[k].force / weight_, m = sums_[k].moment / weight_;
+      j["force_N"] = {f.x, f.y, f.z};
+      j["moment_N_m"] = {m.x, m.y, m.z};
+      if (g.reference_velocity) {
+        j["cd"] = sums_[k].cd / weight_;
+        j["reference_velocity_m_s"] = *g.reference_velocity;
+        j["reference_area"] = *g.reference_area;
+      }
+    }
+    j["moment_reference_point_m"] = {g.reference_point.x, g.reference_point.y, g.reference_point.z};
+    out.push_back(j);
+  }
+  return out;
+}
+
+std::vector<CsvColumn> body_state_columns() {
+  return {{"time", "s"},      {"body", ""},  {"x", "m"},          {"y", "m"},
+          {"z", "m"},         {"vx", "m/s"}, {"vy", "m/s"},       {"vz", "m/s"},
+          {"qw", ""},         {"qx", ""},    {"qy", ""},          {"qz", ""},
+          {"Fx", "N"},        {"Fy", "N"},   {"Fz", "N"},         {"Mx", "N m"},
+          {"My", "N m"},      {"Mz", "N m"}, {"contact_Fx", "N"}, {"contact_Fy", "N"},
+          {"contact_Fz", "N"}};
+}
+
+void append_body_rows(const Simulation& sim, CsvSeries& csv) {
+  const auto& bodies = sim.bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const RigidBody& r = bodies[b];
+    const double row[] = {sim.time(),        static_cast<double>(b),
+                          r.state.com.x,     r.state.com.y,
+                          r.state.com.z,     r.state.vel.x,
+                          r.state.vel.y,     r.state.vel.z,
+                          r.state.q.w,       r.state.q.x,
+                          r.state.q.y,       r.state.q.z,
+                          r.fluid_force.x,   r.fluid_force.y,
+                          r.fluid_force.z,   r.fluid_torque.x,
+                          r.fluid_torque.y,  r.fluid_torque.z,
+                          r.contact_force.x, r.contact_force.y,
+                          r.contact_force.z};
+    csv.append(row);
+  }
+}
+
+}  // namespace netsph

@@ -1,0 +1,128 @@
+// [[body]] -> body particles and rigid-body state (solver/scene.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "netsph/core/error.hpp"
+#include "netsph/geometry/shapes.hpp"
+#include "netsph/solver/scene.hpp"
+
+namespace netsph {
+namespace {
+
+Shape shape_of(const BodySpec& b) {
+  switch (b.shape) {
+    case BodyShape::Box:
+      return Shape::box(b.lengths);
+    case BodyShape::Cylinder:
+      return Shape::cylinder(b.diameter, b.length);
+    case BodyShape::Sphere:
+      return Shape::sphere(b.diameter);
+    case BodyShape::Cruciform:
+      return Shape::cruciform(b.length, b.diameter);
+  }
+  return {};
+}
+
+int shell_layers(const BodySpec& b, const CaseSpec& spec) {
+  if (b.layers < 0) return 0;  // solid
+  if (b.layers > 0) return b.layers;
+  return static_cast<int>(std::ceil(2 * spec.simulation.h_over_dp - 1e-9));
+}
+
+}  // namespace
+
+void add_bodies(const CaseSpec& spec, Scene& scene) {
+  const int dims = spec.simulation.dimensions;
+  const double dp = spec.simulation.dp;
+  ParticleSet& p = scene.particles;
+  for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
+    const BodySpec& b = spec.bodies[bi];
+    const Shape shape = shape_of(b);
+    // 3D: body-fitted lattice along the local axes. 2D: the lattice must lie in the x-z
+    // plane, so it runs along the local directions of world x and z.
+    const std::vector<Vec3d> axes =
+        dims == 3 ? std::vector<Vec3d>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}
+                  : std::vector<Vec3d>{rotate_inverse(b.orientation, {1, 0, 0}),
+                                       rotate_inverse(b.orientation, {0, 0, 1})};
+    const std::vector<Vec3d> local = body_lattice(shape, dp, shell_layers(b, spec), axes);
+    if (local.empty()) {
+      throw Error(b.where.str(), fmt::format("body '{}' ({}) holds no particle at dp = {} m: it is "
+                                             "thinner than dp; lower dp or enlarge the body",
+                                             b.name, b.shape_name, dp));
+    }
+    RigidBody body;
+    body.name = b.name;
+    body.group = b.group;
+    body.motion = b.motion;
+    body.model = b.model;
+    body.slip = b.slip;
+    body.inertia.dims = dims;
+    // Fixed and prescribed bodies never use their mass; give them the fluid's so that
+    // reports stay meaningful.
+    const double measure = shape.measure(dims);
+    const double density =
+        b.mass ? *b.mass / measure : (b.density > 0 ? b.density : spec.fluid.density);
+    body.inertia.mass = density * measure;
+    body.inertia.principal = shape.inertia_per_density(dims) * density;
+    body.state.com = b.center;
+    if (dims == 2) body.state.com.y = 0;
+    body.state.q = b.orientation;
+    body.state.vel = b.motion == BodyMotion::Floating ? b.initial_velocity : b.velocity.at(0.0);
+    body.start = body.state;
+    body.first_id = p.next_id;
+    body.count = static_cast<std::uint32_t>(local.size());
+    body.offsets.reserve(local.size());
+    body.ghosts.reserve(local.size());
+    for (const Vec3d& x : local) {
+      body.offsets.push_back(Vec3f(x));
+      const Vec3d ghost = (shape.nearest_surface_point(x) - x) * 2.0;
+      body.ghosts.push_back(b.model == WallModel::Mdbc ? Vec3f(ghost) : Vec3f{});
+      const Vec3d r = rotate(body.state.q, x);
+      p.add(body.state.com + r, Vec3f(rigid_point_velocity(body.state, r)),
+            static_cast<Real>(spec.fluid.density), ParticleKind::Body,
+            static_cast<std::uint32_t>(bi), Vec3f(rotate(body.state.q, Vec3d(body.ghosts.back()))));
+    }
+    scene.sources.push_back({b.name, local.size()});
+    scene.bodies.push_back(std::move(body));
+  }
+}
+
+std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
+  if (spec.bodies.empty()) return 0;
+  const double dp = spec.simulation.dp;
+  ParticleSet& p = scene.particles;
+  std::vector<Shape> shapes;
+  std::vector<double> reach;  // bounding radius + dp
+  for (const auto& b : spec.bodies) {
+    shapes.push_back(shape_of(b));
+    reach.push_back(norm(shapes.back().bounding_half()) + dp);
+  }
+  std::vector<char> keep(p.size(), 1);
+  std::size_t removed = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!carries_fluid(p.kind[i])) continue;
+    for (std::size_t bi = 0; bi < shapes.size(); ++bi) {
+      const RigidBody& body = scene.bodies[bi];
+      const Vec3d d = p.pos[i] - body.state.com;
+      if (norm2(d) > reach[bi] * reach[bi]) continue;
+      const Vec3d local = rotate_inverse(body.state.q, d);
+      // Inside, or within dp/2 of the surface (the fluid keeps dp/2 off it, as off walls).
+      if (shapes[bi].inside(local) || shapes[bi].depth(local) < 0.5 * dp * (1 - 1e-6)) {
+        keep[i] = 0, ++removed;
+        break;
+      }
+    }
+  }
+  if (removed == 0) return 0;
+  ParticleSet q;
+  q.reserve(p.size() - removed);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (keep[i]) q.append_copy(p, i);
+  q.next_id = p.next_id;
+  p = std::move(q);
+  return removed;
+}
+
+}  // namespace netsph
