@@ -885,6 +885,13 @@ TEST(CaseOverrides, BodyKeys) {
   EXPECT_EQ(spec.bodies[7].name, "body8");
   EXPECT_EQ(spec.bodies[7].where.str(), "--set body.7.shape=sphere");
 
+  // A constant velocity replaces body 7's motion_history, and leaves its `motion` alone
+  // (the wall's velocity/motion pair must not touch a body).
+  const CaseSpec v =
+      read_case_file(kCasesDir / "good" / "bodies3d.toml", {"body.6.velocity=[0.3, 0, 0]"});
+  EXPECT_EQ(v.bodies[6].motion, BodyMotion::Prescribed);
+  EXPECT_EQ(v.bodies[6].velocity.velocities, (std::vector<Vec3d>{{0.3, 0, 0}}));
+
   try {
     read_case_file(kCasesDir / "good" / "bodies3d.toml", {"body.0.shape=box"});
     FAIL() << "a box with a diameter was accepted";

@@ -149,17 +149,22 @@ toml::node& entry_of_array(toml::array& array, const std::string& segment,
 /// Keys that give the same quantity two ways and so exclude each other. An override of one
 /// replaces the other as well, so `--set fluid.sound_speed=30` works on a case that sets
 /// sound_speed_coef instead of failing with "cannot be combined".
-constexpr std::pair<std::string_view, std::string_view> kAlternatives[] = {
-    {"sound_speed", "sound_speed_coef"},
-    {"velocity", "motion"},          // [[wall]]
-    {"velocity", "profile"},         // [[inlet]]
-    {"velocity", "motion_history"},  // [[body]]
+/// Each pair belongs to one top-level table: a body's `motion` is not a wall's.
+struct Alternatives {
+  std::string_view table, a, b;
+};
+constexpr Alternatives kAlternatives[] = {
+    {"fluid", "sound_speed", "sound_speed_coef"},
+    {"wall", "velocity", "motion"},
+    {"inlet", "velocity", "profile"},
+    {"body", "velocity", "motion_history"},
 };
 
-void erase_alternatives(toml::table& table, std::string_view key) {
-  for (const auto& [a, b] : kAlternatives) {
-    if (key == a) table.erase(b);
-    if (key == b) table.erase(a);
+void erase_alternatives(toml::table& table, std::string_view top, std::string_view key) {
+  for (const auto& alt : kAlternatives) {
+    if (top != alt.table) continue;
+    if (key == alt.a) table.erase(alt.b);
+    if (key == alt.b) table.erase(alt.a);
   }
 }
 
@@ -173,7 +178,7 @@ void apply_override(toml::table& root, const Override& o) {
     const bool last = i + 1 == o.keys.size();
     if (auto* table = current->as_table()) {
       if (last) {
-        erase_alternatives(*table, segment);
+        erase_alternatives(*table, o.keys.front(), segment);
         table->insert_or_assign(segment, std::move(value));  // moving keeps the node's source
         return;
       }

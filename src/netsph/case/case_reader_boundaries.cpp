@@ -26,7 +26,8 @@ constexpr std::array kOpenFaces = {Choice<Face>{"xmin", kXMin}, Choice<Face>{"xm
                                    Choice<Face>{"zmin", kZMin}, Choice<Face>{"zmax", kZMax}};
 constexpr std::array kBufferDensities = {
     Choice<BufferDensity>{"extrapolated", BufferDensity::Extrapolated},
-    Choice<BufferDensity>{"hydrostatic", BufferDensity::Hydrostatic}};
+    Choice<BufferDensity>{"hydrostatic", BufferDensity::Hydrostatic},
+    Choice<BufferDensity>{"reference", BufferDensity::Reference}};
 
 /// `values` (read from the array `node`) must be strictly increasing.
 void check_increasing(const TomlTableReader& r, std::string_view key, const toml::node& node,
@@ -218,7 +219,7 @@ OpenBoundarySpec CaseReader::read_open_boundary(const toml::table& table, bool i
   if (ob.density == BufferDensity::Hydrostatic && spec_.fluid.gravity.z == 0) {
     r.fail_value("density", *r.find("density"),
                  fmt::format("needs gravity along z for the hydrostatic pressure, but "
-                             "fluid.gravity = {} has z = 0; use \"extrapolated\"",
+                             "fluid.gravity = {} has z = 0; use \"extrapolated\" or \"reference\"",
                              format_vec3(spec_.fluid.gravity)));
   }
   ob.surface_z = r.optional_number("surface_z", NumberRule::any("m"));

@@ -17,8 +17,10 @@ enum class WallSlip : std::uint8_t { WallVelocity, NoSlip, FreeSlip };
 /// Particle shifting: none, or the Fickian form of Lind et al. (2012) with Skillen et al.'s
 /// (2013) coefficient, as DualSPHysics applies it.
 enum class ShiftingModel : std::uint8_t { None, Fickian };
-/// How an open boundary's buffer particles get their density.
-enum class BufferDensity : std::uint8_t { Extrapolated, Hydrostatic };
+/// How an open boundary's buffer particles get their density: extrapolated from the fluid,
+/// hydrostatic below a free surface, or the reference density rho0 (zero pressure: the
+/// pressure reference of a closed duct's outlet).
+enum class BufferDensity : std::uint8_t { Extrapolated, Hydrostatic, Reference };
 
 /// The solid of a [[body]], in its own frame (geometry/shapes.hpp has the conventions).
 enum class BodyShape : std::uint8_t { Box, Cylinder, Sphere, Cruciform };

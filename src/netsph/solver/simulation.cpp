@@ -34,6 +34,27 @@ Simulation::Simulation(const CaseSpec& spec)
   contact_model_ = ContactModel::make(spec.simulation.dp, scene_.sound_speed);
 }
 
+void Simulation::build_view(bool half_step) {
+  view_.build(p_, scene_.model, grid_.origin());
+  // Solids under a mirror slip condition show the fluid the mirrored velocity in the viscous
+  // terms (p_.vel) but their own velocity in continuity.
+  bool mirrors = false;
+  for (const auto& w : walls_) mirrors |= !w.shows_own_velocity;
+  for (const auto& b : scene_.bodies) mirrors |= !b.shows_own_velocity();
+  if (!mirrors) return;
+  const auto n = static_cast<std::int64_t>(p_.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p_.kind[i] == ParticleKind::Wall) {
+      const WallKinematics& w = walls_[p_.group[i]];
+      if (!w.shows_own_velocity) view_.set_continuity_velocity(i, half_step ? w.half : w.start);
+    } else if (p_.kind[i] == ParticleKind::Body) {
+      if (!scene_.bodies[p_.group[i]].shows_own_velocity())
+        view_.set_continuity_velocity(i, body_point_velocity(i));
+    }
+  }
+}
+
 Vec3f Simulation::body_point_velocity(std::size_t i) const {
   const RigidBody& b = scene_.bodies[p_.group[i]];
   return Vec3f(rigid_point_velocity(b.state, p_.pos[i] - b.state.com));
@@ -43,16 +64,19 @@ double Simulation::place_body_particles(bool from_step_start) {
   auto& bodies = scene_.bodies;
   if (bodies.empty()) return 0;
   const auto n = static_cast<std::int64_t>(p_.size());
+  const bool dims2 = scene_.model.dims == 2;
   double max_d2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max_d2)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p_.kind[i] != ParticleKind::Body) continue;
     const RigidBody& b = bodies[p_.group[i]];
     const std::uint32_t k = p_.id[i] - b.first_id;
-    const Vec3d r = rotate(b.state.q, Vec3d(b.offsets[k]));
+    Vec3d r = rotate(b.state.q, Vec3d(b.offsets[k]));
+    Vec3d ghost = rotate(b.state.q, Vec3d(b.ghosts[k]));
+    if (dims2) r.y = 0, ghost.y = 0;  // rotation round-off must not leave the x-z plane
     p_.pos[i] = b.state.com + r;
     if (b.shows_own_velocity()) p_.vel[i] = Vec3f(rigid_point_velocity(b.state, r));
-    p_.ghost[i] = Vec3f(rotate(b.state.q, Vec3d(b.ghosts[k])));
+    p_.ghost[i] = Vec3f(ghost);
     if (from_step_start) max_d2 = std::max(max_d2, norm2(p_.pos[i] - start_.pos[i]));
   }
   return std::sqrt(max_d2);
@@ -183,6 +207,7 @@ void Simulation::apply_open_boundary_state() {
     if (p_.kind[i] != ParticleKind::Buffer) continue;
     const OpenBoundaryZone& z = zones[p_.group[i]];
     if (z.velocity_imposed) p_.vel[i] = z.imposed_velocity(p_.pos[i]);
+    if (z.density == BufferDensity::Reference) p_.rho[i] = eos.rho0;
     if (z.density == BufferDensity::Hydrostatic) {
       const double pressure = -static_cast<double>(eos.rho0) * gz * (z.surface_z - p_.pos[i].z);
       p_.rho[i] = static_cast<Real>(pressure > 0 ? eos.density(pressure) : eos.rho0);
@@ -281,7 +306,7 @@ void Simulation::step() {
   apply_mdbc();
 
   const bool bodies = !scene_.bodies.empty();
-  build_view();
+  build_view(false);
   const RateReductions r0 = compute_rates(m, grid_, view_, p_.kind, acc_, drho_);
   if (bodies) compute_contacts(contact_model_, grid_, view_, p_.kind, contact_);
   const double dt = compute_dt(r0);
@@ -298,7 +323,7 @@ void Simulation::step() {
     ++diag_.resorts;
   }
 
-  build_view();
+  build_view(true);
   compute_rates(m, grid_, view_, p_.kind, acc_, drho_, shift_on_ ? &shift_sums_ : nullptr);
   if (bodies) {
     compute_contacts(contact_model_, grid_, view_, p_.kind, contact_);

@@ -76,7 +76,8 @@ class Simulation {
 
  private:
   void sort_particles(bool mid_step);
-  void build_view() { view_.build(p_, scene_.model, grid_.origin()); }
+  /// The interaction view of the current state; `half_step` selects the walls' velocity.
+  void build_view(bool half_step);
   double compute_dt(const RateReductions& r);
   void update_wall_kinematics(double dt);
   void apply_open_boundary_state();

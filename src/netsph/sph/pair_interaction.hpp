@@ -40,7 +40,11 @@ struct RateSums {
 struct Neighbour {
   Vec3f rab;  ///< r_a - r_b, m
   Real r2;    ///< |r_ab|^2 (> 0, < support^2)
-  Vec3f vab;  ///< v_a - v_b, m/s
+  Vec3f vab;  ///< v_a - v_b in the viscous terms, m/s
+  /// v_a - v_b in continuity. They differ for a solid b under a mirror slip condition:
+  /// continuity sees the solid's own velocity, viscosity the mirrored one (as DualSPHysics'
+  /// mDBC2); mirroring in continuity too compresses the fluid along curved no-slip walls.
+  Vec3f vab_c;
   Real rho_b;
   Real press_b;
   Real mass_b;
@@ -57,7 +61,7 @@ NETSPH_HD void fluid_pair_rates(const FluidModel& m, Real rho_a, Real press_a, c
   const Real inv_r2_eta = Real(1) / (b.r2 + m.eta2);
 
   // Continuity: m_b v_ab . grad W.
-  s.drho += b.mass_b * fac * dot_vr;
+  s.drho += b.mass_b * fac * dot(b.vab_c, b.rab);
 
   // Pressure, plus artificial viscosity for approaching pairs.
   Real p_term = (press_a + b.press_b) / (rho_a * b.rho_b);
@@ -88,7 +92,7 @@ NETSPH_HD void boundary_pair_rates(const FluidModel& m, const Neighbour& b, Rate
   const Real r = std::sqrt(b.r2);
   const Real fac = kernel_grad_factor<Kernel>(m.kernel, r);
   const Real dot_vr = dot(b.vab, b.rab);
-  s.drho += b.fluid_b * b.mass_b * fac * dot_vr;
+  s.drho += b.fluid_b * b.mass_b * fac * dot(b.vab_c, b.rab);
   const Real amu = std::fabs(m.kernel.h * dot_vr / (b.r2 + m.eta2)) * b.fluid_b;
   s.visc_dt = s.visc_dt > amu ? s.visc_dt : amu;
 }

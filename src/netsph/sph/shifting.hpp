@@ -40,7 +40,11 @@ NETSPH_HD Vec3f shifting_displacement(const ShiftingParams& s, const Vec3f& grad
   if (!(div_r > s.threshold)) return {};
   Real ramp = (div_r - s.threshold) / (s.dims - s.threshold);
   ramp = ramp < Real(1) ? ramp : Real(1);
-  const Vec3f d = grad_c * (-s.coefficient * s.h * speed * dt * ramp);
+  Vec3f d = grad_c * (-s.coefficient * s.h * speed * dt * ramp);
+  // In 2D, y is a degenerate direction: shifting along it would push particles out of the
+  // plane and amplify round-off (the concentration "gradient" across the plane points at
+  // the plane), so it is removed.
+  if (s.dims == Real(2)) d.y = 0;
   auto cap = [&](Real x) {
     return x > s.max_component ? s.max_component : (x < -s.max_component ? -s.max_component : x);
   };

@@ -29,6 +29,9 @@ inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std
   const Real* __restrict vx = v.vx.data();
   const Real* __restrict vy = v.vy.data();
   const Real* __restrict vz = v.vz.data();
+  const Real* __restrict cvx = v.cvx.data();
+  const Real* __restrict cvy = v.cvy.data();
+  const Real* __restrict cvz = v.cvz.data();
   const Real* __restrict rho = v.rho.data();
   const Real* __restrict press = v.press.data();
   const Real* __restrict fluid = v.fluid.data();
@@ -44,8 +47,13 @@ inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std
       const Real dx = xs - x[b], dy = ys - y[b], dz = zs - z[b];
       const Real r2 = dx * dx + dy * dy + dz * dz;
       if (r2 < m.support2 && b != a) {
-        const Neighbour nb{{dx, dy, dz}, r2,       {vxa - vx[b], vya - vy[b], vza - vz[b]},
-                           rho[b],       press[b], m.mass,
+        const Neighbour nb{{dx, dy, dz},
+                           r2,
+                           {vxa - vx[b], vya - vy[b], vza - vz[b]},
+                           {vxa - cvx[b], vya - cvy[b], vza - cvz[b]},
+                           rho[b],
+                           press[b],
+                           m.mass,
                            fluid[b]};
         RateSums s;
         fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb, s);
@@ -74,6 +82,7 @@ inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::ui
                           const NeighbourRanges& ranges, int nranges) {
   const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
+  const Real cxa = v.cvx[a], cya = v.cvy[a], cza = v.cvz[a];  // the solid's own velocity
   Real dr = 0, vdt = 0;
   for (int k = 0; k < nranges; ++k) {
     const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
@@ -84,8 +93,13 @@ inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::ui
       const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
       const Real r2 = dx * dx + dy * dy + dz * dz;
       if (r2 < m.support2 && v.fluid[b] > Real(0)) {
-        const Neighbour nb{{dx, dy, dz}, r2,         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                           v.rho[b],     v.press[b], m.mass,
+        const Neighbour nb{{dx, dy, dz},
+                           r2,
+                           {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
+                           {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
+                           v.rho[b],
+                           v.press[b],
+                           m.mass,
                            v.fluid[b]};
         RateSums s;
         boundary_pair_rates<Kernel>(m, nb, s);
@@ -108,6 +122,7 @@ inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::ui
                           const NeighbourRanges& ranges, int nranges) {
   const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
+  const Real cxa = v.cvx[a], cya = v.cvy[a], cza = v.cvz[a];  // the solid's own velocity
   const Real rho_a = v.rho[a], press_a = v.press[a];
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
   for (int k = 0; k < nranges; ++k) {
@@ -119,8 +134,13 @@ inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::ui
       const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
       const Real r2 = dx * dx + dy * dy + dz * dz;
       if (r2 < m.support2 && v.fluid[b] > Real(0)) {
-        const Neighbour nb{{dx, dy, dz}, r2,         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                           v.rho[b],     v.press[b], m.mass,
+        const Neighbour nb{{dx, dy, dz},
+                           r2,
+                           {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
+                           {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
+                           v.rho[b],
+                           v.press[b],
+                           m.mass,
                            v.fluid[b]};
         RateSums s;
         fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a, nb, s);
