@@ -218,9 +218,7 @@ std::vector<Vec3d> body_lattice(const Shape& s, double dp, int shell_layers,
         Vec3d p{};
         for (std::size_t a = 0; a < na; ++a) p += axes[a] * ((idx[a] + offset[a]) * dp);
         if (!s.inside(p)) continue;
-        const double d = s.depth(p);
-        if (d < 0.5 * dp - tol) continue;
-        if (shell_layers > 0 && d > shell_layers * dp + tol) continue;
+        if (shell_layers > 0 && s.depth(p) > shell_layers * dp + tol) continue;
         pts.push_back(p);
       }
   return pts;

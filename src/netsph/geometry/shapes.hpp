@@ -50,10 +50,11 @@ struct Shape {
 /// Body particles in the local frame: a dp lattice along the given local-frame unit axes (3 in
 /// 3D: the local axes, body-fitted; 2 in 2D: the local directions of world x and z, so the
 /// lattice lies in the simulation plane), centred on the shape and offset by dp/2 along axes
-/// with an even number of layers (a box of n dp holds n layers exactly). Keeps the points at
-/// least dp/2 inside the surface (the mDBC convention: the surface lies dp/2 beyond the outer
-/// particle layer) and, when shell_layers > 0, at most shell_layers dp deep (particles deeper
-/// than the kernel support never meet the fluid).
+/// with an even number of layers. Keeps every point inside the shape, so a box of L along an
+/// axis holds max(1, round(L / dp)) layers: exactly n for L = n dp, with its faces dp/2 beyond
+/// the outer layers (the mDBC convention), and the nearest whole number of layers otherwise (a
+/// plate 1.6 dp thick gets two, not none). When shell_layers > 0 only points at most
+/// shell_layers dp deep are kept (deeper ones never meet the fluid).
 std::vector<Vec3d> body_lattice(const Shape& s, double dp, int shell_layers,
                                 const std::vector<Vec3d>& axes);
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "netsph/core/error.hpp"
+#include "netsph/geometry/body_particles.hpp"
 #include "netsph/geometry/shapes.hpp"
 #include "netsph/solver/scene.hpp"
 
@@ -40,13 +41,11 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     const BodySpec& b = spec.bodies[bi];
     const Shape shape = shape_of(b);
-    // 3D: body-fitted lattice along the local axes. 2D: the lattice must lie in the x-z
-    // plane, so it runs along the local directions of world x and z.
-    const std::vector<Vec3d> axes =
-        dims == 3 ? std::vector<Vec3d>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}
-                  : std::vector<Vec3d>{rotate_inverse(b.orientation, {1, 0, 0}),
-                                       rotate_inverse(b.orientation, {0, 0, 1})};
-    const std::vector<Vec3d> local = body_lattice(shape, dp, shell_layers(b, spec), axes);
+    // 2D: the particles must lie in the x-z plane; body_particles needs its local directions.
+    const std::vector<Vec3d> plane{rotate_inverse(b.orientation, {1, 0, 0}),
+                                   rotate_inverse(b.orientation, {0, 0, 1})};
+    const std::vector<Vec3d> local =
+        body_particles(shape, dp, shell_layers(b, spec), dims, plane);
     if (local.empty()) {
       throw Error(b.where.str(), fmt::format("body '{}' ({}) holds no particle at dp = {} m: it is "
                                              "thinner than dp; lower dp or enlarge the body",

@@ -1,0 +1,32 @@
+#pragma once
+// Body particles of a shape, in its local frame: which layout each shape gets.
+//
+// Flat-faced shapes (box, plates) and the cruciform take the dp lattice of body_lattice(),
+// aligned with the faces, so a plate of n dp holds exactly n layers and its faces lie dp/2
+// beyond the outer layer (the mDBC convention).
+//
+// Round sections (sphere; a cylinder's or disc's circular cross-section) are body-fitted:
+// rings (2D, and 3D cylinder layers) or shells (3D sphere) at depths dp/2, 3dp/2, ... below
+// the surface, each with round(circumference / dp) (or round(area / dp^2)) evenly spaced
+// points. A lattice cannot do this: a lattice point lies anywhere between 0 and dp below a
+// curved surface, so keeping only points at least dp/2 deep leaves a staircase whose
+// effective radius is up to dp short (a D = 10 dp cylinder lost 10-20% of its diameter along
+// the lattice axes and read a drag 9% low in the DFG benchmark; docs/VALIDATION.md).
+#include <vector>
+
+#include "netsph/core/vec3.hpp"
+#include "netsph/geometry/shapes.hpp"
+
+namespace netsph {
+
+/// `plane` (2D only): the local-frame directions of world x and z, which span the simulation
+/// plane. shell_layers > 0 keeps only particles at most shell_layers dp deep (0: solid).
+std::vector<Vec3d> body_particles(const Shape& s, double dp, int shell_layers, int dims,
+                                  const std::vector<Vec3d>& plane);
+
+/// Points evenly spread on a ring of radius r about c in the plane of unit vectors u, v:
+/// max(1, round(2 pi r / dp)) of them, the first at angle `phase` (radians) from u.
+void add_ring_points(std::vector<Vec3d>& out, const Vec3d& c, const Vec3d& u, const Vec3d& v,
+                     double r, double dp, double phase);
+
+}  // namespace netsph
