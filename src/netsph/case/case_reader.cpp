@@ -27,8 +27,8 @@ const std::vector<TableKeys>& schema() {
       {"simulation",
        {"name", "dimensions", "dp", "h_over_dp", "kernel", "end_time", "cfl", "dt_min", "dt_max"}},
       {"fluid",
-       {"density", "sound_speed", "sound_speed_coef", "gamma", "gravity", "viscosity",
-        "density_diffusion", "shifting"}},
+       {"density", "sound_speed", "sound_speed_coef", "gamma", "background_pressure", "gravity",
+        "viscosity", "density_diffusion", "shifting"}},
       {"domain", {"min", "max", "periodic"}},
       {"fill", {"min", "max", "velocity", "surface_z"}},
       {"wall", {"name", "min", "max", "faces", "layers", "model", "slip", "velocity", "motion"}},
@@ -247,6 +247,8 @@ void CaseReader::read_fluid() {
                  "(sound_speed, m/s) or as coef * sqrt(|g| H) (sound_speed_coef), not both");
   }
   f.gamma = r.number("gamma", NumberRule::closed(1, 10, ""), f.gamma);
+  f.background_pressure = r.number("background_pressure", NumberRule::closed(0, 1e8, "Pa"),
+                                   f.background_pressure);
   f.gravity = read_in_plane_vector(r, "gravity", NumberRule::any("m/s^2"), f.gravity);
   read_viscosity(r);
   read_density_diffusion(r);

@@ -119,6 +119,7 @@ FluidModel fluid_model_for(const CaseSpec& spec, double sound_speed) {
   in.rho0 = spec.fluid.density;
   in.c0 = sound_speed;
   in.gamma = spec.fluid.gamma;
+  in.p_background = spec.fluid.background_pressure;
   in.gravity = spec.fluid.gravity;
   in.viscosity = spec.fluid.viscosity;
   in.alpha = spec.fluid.alpha;

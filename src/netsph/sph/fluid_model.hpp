@@ -39,6 +39,7 @@ struct FluidModelInput {
   double rho0 = 1000;
   double c0 = 0;
   double gamma = 7;
+  double p_background = 0;  ///< Pa
   Vec3d gravity{0, 0, -9.81};
   ViscosityModel viscosity = ViscosityModel::Artificial;
   double alpha = 0.01;
@@ -56,7 +57,7 @@ inline FluidModel make_fluid_model(const FluidModelInput& in) {
   m.diffusion = in.diffusion;
   m.kernel =
       with_kernel(in.kernel, [&](auto k) { return make_kernel_scale<decltype(k)>(in.dims, h); });
-  m.eos = TaitEos::make(in.rho0, in.c0, in.gamma);
+  m.eos = TaitEos::make(in.rho0, in.c0, in.gamma, in.p_background);
   m.support = static_cast<Real>(2 * h);
   m.support2 = static_cast<Real>(4 * h * h);
   m.eta2 = static_cast<Real>(0.01 * h * h);
