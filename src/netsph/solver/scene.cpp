@@ -156,6 +156,13 @@ Scene build_scene(const CaseSpec& spec) {
           w.name));
     }
   }
+  if (spec.fluid.background_pressure > 0 && norm2(spec.fluid.gravity) > 0) {
+    scene.warnings.push_back(fmt::format(
+        "fluid.background_pressure = {} Pa with gravity: a free surface must have zero "
+        "pressure, and with a background its particles push apart. Use a background only when "
+        "the fluid fills a closed duct",
+        spec.fluid.background_pressure));
+  }
   for (const auto& o : spec.inlets) scene.zones.push_back(make_zone(o, true, spec, top_surface));
   for (const auto& o : spec.outlets) scene.zones.push_back(make_zone(o, false, spec, top_surface));
 
