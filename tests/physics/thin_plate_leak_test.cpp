@@ -18,9 +18,9 @@ namespace {
 constexpr double kPlateX = 0.4, kThickness = 0.02, kHeight = 0.8;
 
 struct LeakCount {
-  std::size_t crossed = 0;   ///< distinct fluid particles ever seen past the back face
-  double deepest_x = 0;      ///< largest x of any fluid particle, m
-  double max_pressure = 0;   ///< largest mean pressure on the plate's front, Pa
+  std::size_t crossed = 0;  ///< distinct fluid particles ever seen past the back face
+  double deepest_x = 0;     ///< largest x of any fluid particle, m
+  double max_pressure = 0;  ///< largest mean pressure on the plate's front, Pa
 };
 
 LeakCount run_against_plate() {
@@ -48,9 +48,10 @@ LeakCount run_against_plate() {
 
 TEST(ThinPlate, TwoLayerMdbcPlateHoldsADamBreakSurge) {
   const LeakCount r = run_against_plate();
-  std::printf("2-layer mDBC plate: %zu particles crossed, deepest fluid x = %.4f m (front face "
-              "%.3f m), mean pressure on the plate up to %.0f Pa\n",
-              r.crossed, r.deepest_x, kPlateX - 0.5 * kThickness, r.max_pressure);
+  std::printf(
+      "2-layer mDBC plate: %zu particles crossed, deepest fluid x = %.4f m (front face "
+      "%.3f m), mean pressure on the plate up to %.0f Pa\n",
+      r.crossed, r.deepest_x, kPlateX - 0.5 * kThickness, r.max_pressure);
   // The water really pushes on it: the surge's impact, then at least the leaning column's
   // rho g h^2 / 2 spread over the plate's height (0.17 m of water at rest: 180 Pa).
   EXPECT_GT(r.max_pressure, 500.0);

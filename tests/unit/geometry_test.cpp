@@ -41,8 +41,7 @@ TEST(Shapes, MeasuresAgainstClosedForms) {
   EXPECT_NEAR(Shape::sphere(2).measure(2), kPi, 1e-12);
   EXPECT_NEAR(Shape::cylinder(2, 3).measure(3), 3 * kPi, 1e-12);
   // Two crossed cylinders: 2 pi r^2 L minus the Steinmetz solid 16 r^3 / 3.
-  EXPECT_NEAR(Shape::cruciform(1, 0.1).measure(3), 2 * kPi * 0.0025 - 16.0 / 3.0 * 1.25e-4,
-              1e-12);
+  EXPECT_NEAR(Shape::cruciform(1, 0.1).measure(3), 2 * kPi * 0.0025 - 16.0 / 3.0 * 1.25e-4, 1e-12);
 }
 
 TEST(Shapes, NearestSurfacePointOfCylinderMantleAndCap) {

@@ -247,8 +247,8 @@ void CaseReader::read_fluid() {
                  "(sound_speed, m/s) or as coef * sqrt(|g| H) (sound_speed_coef), not both");
   }
   f.gamma = r.number("gamma", NumberRule::closed(1, 10, ""), f.gamma);
-  f.background_pressure = r.number("background_pressure", NumberRule::closed(0, 1e8, "Pa"),
-                                   f.background_pressure);
+  f.background_pressure =
+      r.number("background_pressure", NumberRule::closed(0, 1e8, "Pa"), f.background_pressure);
   f.gravity = read_in_plane_vector(r, "gravity", NumberRule::any("m/s^2"), f.gravity);
   read_viscosity(r);
   read_density_diffusion(r);

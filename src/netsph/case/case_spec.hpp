@@ -42,7 +42,7 @@ struct FluidSpec {
       20;              ///< c0 = coef * sqrt(|g| * H), H = deepest fill (used when sound_speed = 0)
   double gamma = 7.0;  ///< Tait exponent
   double background_pressure = 0;  ///< Pa, added to the equation of state (closed flows)
-  Vec3d gravity{0, 0, -9.81};  ///< m/s^2
+  Vec3d gravity{0, 0, -9.81};      ///< m/s^2
   ViscosityModel viscosity = ViscosityModel::Artificial;
   double alpha = 0.01;                ///< artificial viscosity coefficient
   double kinematic_viscosity = 1e-6;  ///< nu, m^2/s, for the laminar model

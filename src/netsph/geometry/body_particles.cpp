@@ -21,18 +21,32 @@ std::vector<double> layer_radii(double R, double dp, int shell_layers) {
   return radii;
 }
 
-/// A full or shell disc of radius R in the plane (u, v) through c. Successive rings turn by
-/// half a spacing so that their points do not line up radially.
+/// Points evenly spread on a ring of radius r about c in the plane of unit vectors u, v:
+/// round(2 pi r / dp) of them, or the centre alone for a ring too small to hold two (r < dp/4
+/// or a single point). `stagger` turns the ring by half a spacing, so that successive rings'
+/// points do not line up radially.
+void add_ring(std::vector<Vec3d>& out, const Vec3d& c, const Vec3d& u, const Vec3d& v, double r,
+              double dp, bool stagger) {
+  const long n = std::lround(2 * kPi * r / dp);
+  if (r < 0.25 * dp || n <= 1) {
+    out.push_back(c);
+    return;
+  }
+  const double spacing = 2 * kPi / static_cast<double>(n);
+  const double phase = stagger ? 0.5 * spacing : 0.0;
+  for (long k = 0; k < n; ++k) {
+    const double a = phase + spacing * static_cast<double>(k);
+    out.push_back(c + u * (r * std::cos(a)) + v * (r * std::sin(a)));
+  }
+}
+
+/// A full or shell disc of radius R in the plane (u, v) through c.
 void add_disc(std::vector<Vec3d>& out, const Vec3d& c, const Vec3d& u, const Vec3d& v, double R,
               double dp, int shell_layers) {
-  int i = 0;
+  bool stagger = false;
   for (const double r : layer_radii(R, dp, shell_layers)) {
-    if (r < 0.25 * dp) {
-      out.push_back(c);
-      continue;
-    }
-    const double count = std::max(1.0, std::round(2 * kPi * r / dp));
-    add_ring_points(out, c, u, v, r, dp, (i++ % 2) * kPi / count);
+    add_ring(out, c, u, v, r, dp, stagger);
+    stagger = !stagger;
   }
 }
 
@@ -57,7 +71,9 @@ void add_sphere_shells(std::vector<Vec3d>& out, double R, double dp, int shell_l
   }
 }
 
-bool perpendicular(const Vec3d& a, const Vec3d& b) { return std::fabs(dot(a, b)) < 1e-9; }
+bool perpendicular(const Vec3d& a, const Vec3d& b) {
+  return std::fabs(dot(a, b)) < 1e-9;
+}
 
 /// Cylinder (axis local x) in 3D: axial layers on the dp grid, centred; layers within
 /// shell_layers dp of a cap are full discs, the others rings near the mantle only.
@@ -76,19 +92,6 @@ std::vector<Vec3d> cylinder_3d(const Shape& s, double dp, int shell_layers) {
 
 }  // namespace
 
-void add_ring_points(std::vector<Vec3d>& out, const Vec3d& c, const Vec3d& u, const Vec3d& v,
-                     double r, double dp, double phase) {
-  const long n = std::max(1L, std::lround(2 * kPi * r / dp));
-  if (n == 1) {
-    out.push_back(c);
-    return;
-  }
-  for (long k = 0; k < n; ++k) {
-    const double a = phase + 2 * kPi * static_cast<double>(k) / static_cast<double>(n);
-    out.push_back(c + u * (r * std::cos(a)) + v * (r * std::sin(a)));
-  }
-}
-
 std::vector<Vec3d> body_particles(const Shape& s, double dp, int shell_layers, int dims,
                                   const std::vector<Vec3d>& plane) {
   std::vector<Vec3d> out;
@@ -102,10 +105,9 @@ std::vector<Vec3d> body_particles(const Shape& s, double dp, int shell_layers, i
   }
   // 2D: the section by the simulation plane. A sphere's is a disc, and so is a cylinder's
   // when its axis (local x) is normal to the plane; everything else is polygonal.
-  const bool round_section =
-      s.type == ShapeType::Sphere ||
-      (s.type == ShapeType::Cylinder && perpendicular(plane[0], {1, 0, 0}) &&
-       perpendicular(plane[1], {1, 0, 0}));
+  const bool round_section = s.type == ShapeType::Sphere ||
+                             (s.type == ShapeType::Cylinder && perpendicular(plane[0], {1, 0, 0}) &&
+                              perpendicular(plane[1], {1, 0, 0}));
   if (round_section) {
     add_disc(out, {}, plane[0], plane[1], s.radius, dp, shell_layers);
     return out;

@@ -24,9 +24,4 @@ namespace netsph {
 std::vector<Vec3d> body_particles(const Shape& s, double dp, int shell_layers, int dims,
                                   const std::vector<Vec3d>& plane);
 
-/// Points evenly spread on a ring of radius r about c in the plane of unit vectors u, v:
-/// max(1, round(2 pi r / dp)) of them, the first at angle `phase` (radians) from u.
-void add_ring_points(std::vector<Vec3d>& out, const Vec3d& c, const Vec3d& u, const Vec3d& v,
-                     double r, double dp, double phase);
-
 }  // namespace netsph

@@ -44,8 +44,7 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
     // 2D: the particles must lie in the x-z plane; body_particles needs its local directions.
     const std::vector<Vec3d> plane{rotate_inverse(b.orientation, {1, 0, 0}),
                                    rotate_inverse(b.orientation, {0, 0, 1})};
-    const std::vector<Vec3d> local =
-        body_particles(shape, dp, shell_layers(b, spec), dims, plane);
+    const std::vector<Vec3d> local = body_particles(shape, dp, shell_layers(b, spec), dims, plane);
     if (local.empty()) {
       throw Error(b.where.str(), fmt::format("body '{}' ({}) holds no particle at dp = {} m: it is "
                                              "thinner than dp; lower dp or enlarge the body",
