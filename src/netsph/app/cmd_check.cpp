@@ -15,6 +15,14 @@ int check_command(const CheckArgs& args) {
   const CaseSpec spec = load_case(args.case_choice);
   const int threads = apply_threads(args.threads);
   spdlog::info("case '{}' from {}: valid", spec.simulation.name, spec.source);
+  if (spec.net_only()) {
+    spdlog::info(
+        "standalone net case: {} net(s), no fluid; `netsph net` reports knots, twines "
+        "and the knot sub-step, `netsph run` runs it",
+        spec.nets.size());
+    return 0;
+  }
+  reject_nets_in_fluid(spec);
   Simulation sim(spec);
   log_scene(sim);
 

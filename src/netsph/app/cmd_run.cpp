@@ -6,6 +6,7 @@
 #include "netsph/app/commands.hpp"
 #include "netsph/app/logging.hpp"
 #include "netsph/app/scene_report.hpp"
+#include "netsph/net/standalone_net_run.hpp"
 #include "netsph/solver/runner.hpp"
 
 namespace netsph::app {
@@ -14,6 +15,36 @@ extern "C" void on_interrupt(int) {
   request_stop();
 }
 }  // namespace
+
+/// A standalone net case: no particles, no backend; the knot-spring model in a current.
+int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool quiet) {
+  spdlog::info("standalone net run (no fluid): {} net(s), output folder {}", spec.nets.size(),
+               std::filesystem::absolute(out).string());
+  NetRunOptions opt;
+  opt.out_dir = out;
+  opt.progress = !quiet;
+  const NetRunReport r = run_standalone_nets(spec, opt);
+  for (const NetRunSummary& n : r.nets) {
+    spdlog::info(
+        "net '{}': {} knots, {} twines; over {:.3g}-{:.3g} s: drag {:.4g} N "
+        "(force [{:.4g}, {:.4g}, {:.4g}] N), Cd {:.4f} on the outline, largest "
+        "deflection {:.4g} m",
+        n.name, n.knots, n.twines, r.window[0], r.window[1],
+        norm(spec.current.velocity) > 0
+            ? dot(n.mean_force, spec.current.velocity / norm(spec.current.velocity))
+            : 0.0,
+        n.mean_force.x, n.mean_force.y, n.mean_force.z, n.drag_coefficient, n.max_deflection);
+  }
+  spdlog::info(
+      "{}: t = {:.6g} s, {} knot sub-steps, {:.2f} s wall; outputs: series.csv, "
+      "summary.json, <net>.vtk.series, knots_<net>.csv, profile_<net>.csv",
+      r.status, r.sim_time, r.substeps, r.wall_s);
+  if (r.status == "unstable") {
+    spdlog::error("the net became unstable: {}", r.message);
+    return 3;
+  }
+  return 0;
+}
 
 int run_command(const RunArgs& args) {
   const CaseSpec spec = load_case(args.case_choice);
@@ -26,6 +57,8 @@ int run_command(const RunArgs& args) {
 
   spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,
                spec.source);
+  if (spec.net_only()) return run_net_only(spec, out, args.quiet);
+  reject_nets_in_fluid(spec);
   spdlog::info("backend {}, {} OpenMP threads, output folder {}", backend, threads,
                std::filesystem::absolute(out).string());
   Simulation sim(spec);

@@ -1,4 +1,4 @@
-// netsph command line: run, check, bench, cases. Errors become one line on stderr and a
+// netsph command line: run, check, net, bench, cases. Errors become one line on stderr and a
 // non-zero exit code: 1 for bad input, 3 for an unstable run, 130 for an interrupted one.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -81,6 +81,14 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--backend", bench.backend, "auto, cpu or cuda")->capture_default_str();
   bench_cmd->add_option("--json", bench.json_path, "also write the results to this JSON file");
 
+  NetArgs net;
+  auto* net_cmd = app.add_subcommand(
+      "net",
+      "report the generated nets of a case (knots, twines, knot size, solidity, mass) "
+      "and write them for ParaView");
+  add_case_options(net_cmd, net.case_choice);
+  net_cmd->add_option("-o,--output", net.out_dir, "output folder (default: out/<case name>)");
+
   auto* cases_cmd = app.add_subcommand("cases", "list the built-in cases");
 
   try {
@@ -96,6 +104,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*check_cmd) return check_command(check);
+    if (*net_cmd) return net_command(net);
     if (*bench_cmd) {
       bench.sizes = parse_sizes(sizes);
       return bench_command(bench);

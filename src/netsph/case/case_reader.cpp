@@ -48,6 +48,31 @@ const std::vector<TableKeys>& schema() {
                 "model",         "slip",
                 "layers",        "reference_velocity",
                 "reference_area"}},
+      {"net",
+       {"name",
+        "center",
+        "normal",
+        "up",
+        "angle_of_attack",
+        "width",
+        "height",
+        "twine_length",
+        "twine_diameter",
+        "mesh_grouping",
+        "knot_shape",
+        "equivalent_knot",
+        "knot_layout",
+        "edges",
+        "material",
+        "material_density",
+        "youngs_modulus",
+        "axial_stiffness",
+        "tension_law",
+        "damping_ratio",
+        "fixed_edges",
+        "sinker",
+        "point_loads"}},
+      {"current", {"velocity", "model", "screen", "normal_drag", "tangential_drag"}},
       {"output", {"snapshots", "snapshot_every", "series_every", "force_window"}},
   };
   return tables;
@@ -63,7 +88,7 @@ const std::vector<std::string_view>& keys_of(std::string_view table) {
 
 std::string header_of(std::string_view table) {
   const bool is_array = table == "fill" || table == "wall" || table == "inlet" ||
-                        table == "outlet" || table == "body";
+                        table == "outlet" || table == "body" || table == "net";
   return is_array ? fmt::format("[[{}]]", table) : fmt::format("[{}]", table);
 }
 
@@ -120,10 +145,13 @@ CaseSpec CaseReader::read(const std::string& default_name) {
   read_fluid();
   read_domain();
   read_fills();
+  require_dp();
   read_walls();
   read_open_boundaries(true);
   read_open_boundaries(false);
   read_bodies();
+  read_nets();
+  read_current();
   // Shifting keeps the particle distribution regular where open boundaries add and remove
   // particles; a closed case does without unless asked.
   if (!shifting_given_ && (!spec_.inlets.empty() || !spec_.outlets.empty())) {
@@ -216,7 +244,7 @@ void CaseReader::read_simulation(const std::string& default_name) {
   s.name = r.string("name", default_name);
   if (r.has("name") && s.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
   s.dimensions = static_cast<int>(r.integer("dimensions", IntRule{2, 3}, 3));
-  s.dp = r.required_number("dp", NumberRule::positive("m"), "particle spacing, m, > 0");
+  s.dp = r.number("dp", NumberRule::positive("m"), 0.0);  // required unless net-only: require_dp
   s.h_over_dp = r.number("h_over_dp", NumberRule::closed(1, 3, ""), s.h_over_dp);
   s.kernel = r.choice("kernel", kKernels, s.kernel);
   s.end_time = r.required_number("end_time", NumberRule::positive("s"), "simulated time, s, > 0");
@@ -228,6 +256,14 @@ void CaseReader::read_simulation(const std::string& default_name) {
                  fmt::format("must be > simulation.dt_min ({} s) when both are set",
                              format_number(s.dt_min)));
   }
+}
+
+void CaseReader::require_dp() const {
+  if (spec_.simulation.dp > 0) return;
+  if (spec_.fills.empty() && root_.contains("net")) return;  // a standalone net
+  TomlTableReader r(*find_table("simulation"), "simulation", "[simulation]", keys_of("simulation"),
+                    source_, home_hint);
+  r.require("dp", "particle spacing, m, > 0");
 }
 
 // ---- [fluid] ------------------------------------------------------------------------------
@@ -413,8 +449,10 @@ std::array<bool, 3> CaseReader::read_periodic(const TomlTableReader& r) const {
 
 void CaseReader::read_fills() {
   const std::vector<const toml::table*> tables = find_array_of_tables("fill");
-  if (tables.empty()) {
-    fail_root("a case needs fluid: add at least one [[fill]] table with min and max corners");
+  if (tables.empty() && !root_.contains("net")) {
+    fail_root(
+        "a case needs fluid: add at least one [[fill]] table with min and max corners (or, "
+        "for a standalone net run, [[net]] tables and a [current])");
   }
   for (std::size_t i = 0; i < tables.size(); ++i) {
     spec_.fills.push_back(read_fill(*tables[i], static_cast<int>(i) + 1));

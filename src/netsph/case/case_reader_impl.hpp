@@ -1,7 +1,8 @@
 #pragma once
 // The case-file schema and the CaseReader class, shared by case_reader.cpp (the top-level
 // tables: [simulation], [fluid], [domain], [[fill]], [output]), case_reader_boundaries.cpp
-// ([[wall]], [[inlet]], [[outlet]]) and case_reader_bodies.cpp ([[body]]). Private to the
+// ([[wall]], [[inlet]], [[outlet]]), case_reader_bodies.cpp ([[body]]) and
+// case_reader_nets.cpp ([[net]], [current]). Private to the
 // case module (includes toml++).
 #include <array>
 #include <optional>
@@ -128,6 +129,18 @@ class CaseReader {
   VelocityHistory read_velocity_history(const TomlTableReader& r, std::string_view velocity_key,
                                         std::string_view history_key) const;
   void register_body_name(const toml::table& table, const BodySpec& body, int number);
+
+  // case_reader_nets.cpp
+  void read_nets();
+  NetSpec read_net(const toml::table& table, int number) const;
+  void read_net_orientation(const TomlTableReader& r, NetSpec& net) const;
+  void read_net_material(const TomlTableReader& r, NetSpec& net) const;
+  void read_net_edges(const TomlTableReader& r, NetSpec& net) const;
+  void read_net_sinker(const TomlTableReader& r, NetSpec& net) const;
+  void read_net_point_loads(const TomlTableReader& r, NetSpec& net) const;
+  void read_current();
+  /// dp may be left out of a standalone net case (nets, no fluid); everything else needs it.
+  void require_dp() const;
 
   struct NamedEntry {
     std::string name;

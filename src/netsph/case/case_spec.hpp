@@ -160,6 +160,62 @@ struct BodySpec {
   SourceLocation where;
 };
 
+/// A sinker: a bar along the net's bottom edge, shared among the bottom knots by the length
+/// each one carries (net/net_generator.cpp).
+struct SinkerSpec {
+  double length = 0;              ///< m; 0: no sinker
+  double diameter = 0;            ///< m
+  double density = 0;             ///< kg/m^3
+  double drag_coefficient = 1.2;  ///< cylinder Cd on diameter x length (standalone current)
+};
+
+/// A point load on one knot: row 0 is the bottom row, column 0 the left column (seen from
+/// upstream, looking along the normal).
+struct NetPointLoad {
+  int row = 0;
+  int column = 0;
+  Vec3d force{};  ///< N
+};
+
+/// [[net]]: a rectangular net panel of knots joined by twines (net/net_generator.hpp).
+struct NetSpec {
+  std::string name;           ///< default "net<N>"
+  Vec3d center{};             ///< centre of the outline, m
+  Vec3d normal{1, 0, 0};      ///< unit normal of the net plane (faces the flow)
+  Vec3d up{0, 0, 1};          ///< the outline's height direction (projected onto the net plane)
+  double width = 0;           ///< outline width, m
+  double height = 0;          ///< outline height, m
+  double twine_length = 0;    ///< real twine (bar) length l0, m
+  double twine_diameter = 0;  ///< real twine diameter d0, m
+  double mesh_grouping = 1;   ///< lambda: numerical twine lambda l0, lambda d0
+  KnotShape knot_shape = KnotShape::SquarePlate;
+  EquivalentKnotRule equivalent_knot = EquivalentKnotRule::Exact;
+  KnotLayout layout = KnotLayout::Crossings;
+  EdgeKnots edges = EdgeKnots::Full;
+  std::string material = "nylon";  ///< for reports
+  double material_density = 1140;  ///< kg/m^3
+  double youngs_modulus = 0;       ///< Pa (used when axial_stiffness is 0)
+  double axial_stiffness = 0;      ///< EA of one real twine, N; 0: from youngs_modulus
+  /// Nonlinear twine law T = c1 eps + c2 eps^2 (N) of one real twine; replaces EA when set.
+  std::optional<std::array<double, 2>> tension_law;
+  double damping_ratio = 0.5;         ///< zeta of each twine's axial mode
+  std::array<bool, 4> fixed_edges{};  ///< bottom, top, left, right
+  SinkerSpec sinker;
+  std::vector<NetPointLoad> point_loads;
+  SourceLocation where;
+};
+
+/// [current]: a uniform current loading standalone nets (no SPH fluid).
+struct CurrentSpec {
+  bool given = false;
+  Vec3d velocity{};  ///< m/s
+  NetLoadModel model = NetLoadModel::Screen;
+  ScreenCoefficients screen = ScreenCoefficients::S3KristiansenFaltinsen;
+  double normal_drag = 1.2;      ///< Morison Cn (Bessonneau & Marichal 1998)
+  double tangential_drag = 0.1;  ///< Morison Ct
+  SourceLocation where;
+};
+
 /// [output]
 struct OutputSpec {
   bool snapshots = true;      ///< write HDF5 + XDMF snapshots
@@ -180,7 +236,11 @@ struct CaseSpec {
   std::vector<OpenBoundarySpec> inlets;
   std::vector<OpenBoundarySpec> outlets;
   std::vector<BodySpec> bodies;
+  std::vector<NetSpec> nets;
+  CurrentSpec current;
   OutputSpec output;
+  /// A standalone net run: nets, no fluid (no [[fill]]); dp is then not needed.
+  bool net_only() const { return fills.empty() && !nets.empty(); }
 };
 
 }  // namespace netsph

@@ -29,3 +29,28 @@ enum class BodyShape : std::uint8_t { Box, Cylinder, Sphere, Cruciform };
 enum class BodyMotion : std::uint8_t { Fixed, Floating, Prescribed };
 
 }  // namespace netsph
+
+namespace netsph {
+
+/// The rigid shape that stands for one cruciform net element (Shi et al. 2024, Table 1).
+enum class KnotShape : std::uint8_t { SquarePlate, CircularPlate, Sphere };
+/// How the cruciform element's projected area A and volume V are counted (twine length l,
+/// diameter d; net/equivalent_knot.hpp):
+///   Exact       A = 2ld - d^2, V = (pi/4) d^2 (2l - d)  (the crossing counted once; Table 1)
+///   FullVolume  A = 2ld - d^2, V = (pi/4) d^2 2l        (reproduces the paper's rigid net)
+///   Full        A = 2ld,       V = (pi/4) d^2 2l        (reproduces the paper's Bi 2014 net)
+enum class EquivalentKnotRule : std::uint8_t { Exact, FullVolume, Full };
+/// Crossings: a knot at every twine crossing, (n+1) x (n+1) for n x n meshes, edges included
+/// (the paper's 36 and 121 knots). Inset: n x n knots at the centres of the outline's n x n
+/// cells, half a mesh inside the outline (the paper's 225 knots for Bi's 15 x 15 net).
+enum class KnotLayout : std::uint8_t { Crossings, Inset };
+/// Full: every knot a whole equivalent element (the paper). SolidityMatched: edge knots stand
+/// for half an element and corner knots for a quarter, so that the numerical solidity equals
+/// the real one (crossings layout only).
+enum class EdgeKnots : std::uint8_t { Full, SolidityMatched };
+/// How a standalone net (no SPH fluid) is loaded by a uniform current.
+enum class NetLoadModel : std::uint8_t { None, Morison, Screen };
+/// Screen-model coefficient sets (net/screen_model.hpp).
+enum class ScreenCoefficients : std::uint8_t { S1Aarsnes, S2Loland, S3KristiansenFaltinsen };
+
+}  // namespace netsph
