@@ -29,14 +29,6 @@ CaseSpec load_case(const CaseChoice& choice) {
   return read_case_string(builtin, "builtin:" + name, choice.overrides);
 }
 
-void reject_nets_in_fluid(const CaseSpec& spec) {
-  if (spec.nets.empty() || spec.net_only()) return;
-  throw Error(spec.nets.front().where.str(),
-              "[[net]] in a case with SPH fluid: the two-way net-fluid coupling (knots as "
-              "floating bodies resolved by particles) is not implemented yet; run the net "
-              "standalone (no [[fill]], a [current]) or model knots as [[body]] tables");
-}
-
 int apply_threads(int threads) {
   if (threads < 0) throw Error("--threads", "must be >= 0 (0: all cores)");
   if (threads > 0) omp_set_num_threads(threads);

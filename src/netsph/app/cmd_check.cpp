@@ -22,7 +22,6 @@ int check_command(const CheckArgs& args) {
         spec.nets.size());
     return 0;
   }
-  reject_nets_in_fluid(spec);
   Simulation sim(spec);
   log_scene(sim);
 

@@ -58,7 +58,6 @@ int run_command(const RunArgs& args) {
   spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,
                spec.source);
   if (spec.net_only()) return run_net_only(spec, out, args.quiet);
-  reject_nets_in_fluid(spec);
   spdlog::info("backend {}, {} OpenMP threads, output folder {}", backend, threads,
                std::filesystem::absolute(out).string());
   Simulation sim(spec);

@@ -17,10 +17,6 @@ struct CaseChoice {
 
 CaseSpec load_case(const CaseChoice& choice);
 
-/// Nets in SPH fluid need the two-way coupling (knots as floating bodies), which is not built
-/// yet: say so instead of running the fluid without them.
-void reject_nets_in_fluid(const CaseSpec& spec);
-
 struct RunArgs {
   CaseChoice case_choice;
   std::string out_dir;  ///< empty: out/<case name>

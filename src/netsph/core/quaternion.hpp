@@ -18,6 +18,26 @@ struct Quat {
     const double s = std::sin(0.5 * angle) / n;
     return {std::cos(0.5 * angle), axis.x * s, axis.y * s, axis.z * s};
   }
+  /// The rotation taking the body axes x, y, z to the orthonormal right-handed world
+  /// directions ex, ey, ez (Shepperd's method: the largest of the four squares first).
+  static Quat from_frame(const Vec3d& ex, const Vec3d& ey, const Vec3d& ez) {
+    const double m00 = ex.x, m11 = ey.y, m22 = ez.z, trace = m00 + m11 + m22;
+    Quat q;
+    if (trace > 0) {
+      const double s = 0.5 / std::sqrt(trace + 1);
+      q = {0.25 / s, (ey.z - ez.y) * s, (ez.x - ex.z) * s, (ex.y - ey.x) * s};
+    } else if (m00 > m11 && m00 > m22) {
+      const double s = 2 * std::sqrt(1 + m00 - m11 - m22);
+      q = {(ey.z - ez.y) / s, 0.25 * s, (ey.x + ex.y) / s, (ez.x + ex.z) / s};
+    } else if (m11 > m22) {
+      const double s = 2 * std::sqrt(1 + m11 - m00 - m22);
+      q = {(ez.x - ex.z) / s, (ey.x + ex.y) / s, 0.25 * s, (ez.y + ey.z) / s};
+    } else {
+      const double s = 2 * std::sqrt(1 + m22 - m00 - m11);
+      q = {(ex.y - ey.x) / s, (ez.x + ex.z) / s, (ez.y + ey.z) / s, 0.25 * s};
+    }
+    return q;
+  }
   /// The rotation by the rotation vector phi (axis phi/|phi|, angle |phi|).
   NETSPH_HD static Quat from_rotation_vector(const Vec3d& phi) {
     const double a = std::sqrt(dot(phi, phi));

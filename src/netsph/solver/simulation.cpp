@@ -11,14 +11,17 @@
 namespace netsph {
 
 Simulation::Simulation(const CaseSpec& spec)
-    : spec_(spec), scene_(build_scene(spec)), p_(scene_.particles) {
+    : spec_(spec_with_net_knots(spec)),
+      nets_(coupled_nets(spec_)),
+      scene_(build_scene(spec_)),
+      p_(scene_.particles) {
   const FluidModel& m = scene_.model;
   // A 5% skin costs 16% more candidates in 3D but lets one sort serve both stages; the
   // half-step displacement is at most CFL h v/(2 c0) ~ 0.01 h, so re-sorts are rare.
   constexpr double kSkin = 0.05;
   grid_.configure(scene_.domain_min, scene_.domain_max, m.support, kSkin, m.dims,
                   spec.domain.periodic);
-  walls_.resize(spec.walls.size());
+  walls_.resize(spec_.walls.size());
   for (std::size_t w = 0; w < spec.walls.size(); ++w) {
     walls_[w].shows_own_velocity =
         spec.walls[w].model == WallModel::Dbc || spec.walls[w].slip == WallSlip::WallVelocity;
@@ -129,6 +132,8 @@ void Simulation::advance_bodies(bool corrector, double dt) {
       }
     }
   }
+  // Net knots: translation by the twines and the fluid, sub-cycled over the stage.
+  if (!nets_.empty()) advance_coupled_nets(nets_, scene_.bodies, corrector ? dt : 0.5 * dt);
 }
 
 void Simulation::sort_particles(bool mid_step) {

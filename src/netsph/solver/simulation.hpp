@@ -25,6 +25,7 @@
 #include "netsph/case/case_spec.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/solver/net_coupling.hpp"
 #include "netsph/solver/scene.hpp"
 #include "netsph/sph/shifting.hpp"
 #include "netsph/sph/time_step.hpp"
@@ -60,6 +61,8 @@ class Simulation {
   const CellGrid& grid() const { return grid_; }
   const ParticleSet& particles() const { return p_; }
   const std::vector<RigidBody>& bodies() const { return scene_.bodies; }
+  /// The nets coupled with the fluid (knot positions as of the last stage).
+  const std::vector<CoupledNet>& nets() const { return nets_; }
   std::vector<RigidBody>& bodies() { return scene_.bodies; }
   ParticleSet& particles() { return p_; }
   double time() const { return time_; }
@@ -92,7 +95,8 @@ class Simulation {
   Vec3f body_point_velocity(std::size_t i) const;
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
 
-  CaseSpec spec_;
+  CaseSpec spec_;  ///< the case, with one [[body]] per net knot appended
+  std::vector<CoupledNet> nets_;
   Scene scene_;
   ParticleSet& p_;
   CellGrid grid_;

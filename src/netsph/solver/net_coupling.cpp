@@ -1,0 +1,111 @@
+#include "netsph/solver/net_coupling.hpp"
+
+#include <fmt/format.h>
+
+#include "netsph/net/knot_spring_solver.hpp"
+#include "netsph/net/net_generator.hpp"
+
+namespace netsph {
+namespace {
+
+/// Knots resolved by particles get their buoyancy from the fluid pressure.
+NetEnvironment coupled_environment(const CaseSpec& spec) {
+  NetEnvironment env;
+  env.gravity = spec.fluid.gravity;
+  env.water_density = spec.fluid.density;
+  env.knot_buoyancy = false;
+  return env;
+}
+
+BodySpec knot_body(const NetSpec& net_spec, const NetModel& net, const NetKnot& k) {
+  BodySpec b;
+  b.name = fmt::format("{}.knot{}_{}", net.name, k.row, k.column);
+  b.group = net.name;
+  b.where = net_spec.where;
+  b.center = k.position;
+  // Local x along the net normal (plate thickness), y across, z up.
+  b.orientation = Quat::from_frame(net.normal, net.across, net.up);
+  switch (k.geometry.shape) {
+    case KnotShape::SquarePlate:
+      b.shape_name = "square_plate";
+      b.shape = BodyShape::Box;
+      b.lengths = {k.geometry.thickness, k.geometry.size, k.geometry.size};
+      break;
+    case KnotShape::CircularPlate:
+      b.shape_name = "circular_plate";
+      b.shape = BodyShape::Cylinder;
+      b.diameter = k.geometry.size;
+      b.length = k.geometry.thickness;
+      break;
+    case KnotShape::Sphere:
+      b.shape_name = "sphere";
+      b.shape = BodyShape::Sphere;
+      b.diameter = k.geometry.size;
+      break;
+  }
+  b.motion = k.fixed ? BodyMotion::Fixed : BodyMotion::Floating;
+  b.mass = k.mass;
+  b.layers = -1;  // knots are thin: solid
+  return b;
+}
+
+}  // namespace
+
+CaseSpec spec_with_net_knots(const CaseSpec& spec) {
+  CaseSpec expanded = spec;
+  if (spec.net_only()) return expanded;
+  const NetEnvironment env = coupled_environment(spec);
+  for (const NetSpec& ns : spec.nets) {
+    const NetModel net = generate_net(ns, env);
+    for (const NetKnot& k : net.knots) expanded.bodies.push_back(knot_body(ns, net, k));
+  }
+  return expanded;
+}
+
+std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
+  std::vector<CoupledNet> nets;
+  if (expanded.net_only() || expanded.nets.empty()) return nets;
+  const NetEnvironment env = coupled_environment(expanded);
+  std::size_t knots = 0;
+  for (const NetSpec& ns : expanded.nets) {
+    CoupledNet c;
+    c.model = generate_net(ns, env);
+    knots += c.model.knots.size();
+    for (const NetKnot& k : c.model.knots) c.initial.push_back(k.position);
+    nets.push_back(std::move(c));
+  }
+  std::size_t first = expanded.bodies.size() - knots;
+  for (CoupledNet& c : nets) {
+    c.first_body = first;
+    first += c.model.knots.size();
+  }
+  return nets;
+}
+
+void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>& bodies,
+                          double stage_dt) {
+  for (CoupledNet& c : nets) {
+    NetModel& net = c.model;
+    for (std::size_t k = 0; k < net.knots.size(); ++k) {
+      const RigidBody& b = bodies[c.first_body + k];
+      net.knots[k].position = b.start.com;
+      net.knots[k].velocity = b.start.vel;
+    }
+    const auto fluid = [&](const NetModel& n, std::vector<Vec3d>& f) {
+      for (std::size_t k = 0; k < n.knots.size(); ++k) {
+        const RigidBody& b = bodies[c.first_body + k];
+        f[k] += b.fluid_force + b.contact_force;
+      }
+    };
+    KnotSpringSolver solver(net);
+    solver.advance(stage_dt, fluid);
+    for (std::size_t k = 0; k < net.knots.size(); ++k) {
+      RigidBody& b = bodies[c.first_body + k];
+      if (b.motion != BodyMotion::Floating) continue;
+      b.state.com = net.knots[k].position;
+      b.state.vel = net.knots[k].velocity;
+    }
+  }
+}
+
+}  // namespace netsph
