@@ -74,9 +74,23 @@ std::vector<CsvColumn> series_columns(int dims) {
 }
 
 std::vector<CsvColumn> with_force_columns(std::vector<CsvColumn> cols,
-                                          const BodyForceRecorder& forces) {
+                                          const BodyForceRecorder& forces, const Simulation& sim) {
   for (auto& c : forces.series_columns()) cols.push_back(std::move(c));
+  // Coupled nets: largest deflection along the normal and largest twine tension.
+  for (const CoupledNet& net : sim.nets()) {
+    cols.push_back({net.model.name + "_deflection", "m"});
+    cols.push_back({net.model.name + "_max_tension", "N"});
+  }
   return cols;
+}
+
+double max_twine_tension(const NetModel& net) {
+  double m = 0;
+  for (const NetTwine& t : net.twines) {
+    const double length = norm(net.knots[t.b].position - net.knots[t.a].position);
+    m = std::max(m, twine_tension(t.law, (length - t.rest) / t.rest));
+  }
+  return m;
 }
 }  // namespace
 
@@ -84,7 +98,9 @@ RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool sn
     : dir_(std::move(dir)),
       forces_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
       series_((std::filesystem::create_directories(dir_), dir_ / "series.csv"),
-              with_force_columns(series_columns(sim.model().dims), forces_)) {
+              with_force_columns(series_columns(sim.model().dims), forces_, sim)) {
+  for (const CoupledNet& net : sim.nets())
+    net_vtk_.emplace_back(dir_ / (net.model.name + ".vtk.series"));
   if (snapshots) snapshots_ = std::make_unique<SnapshotWriter>(dir_, "particles");
   if (!sim.bodies().empty()) {
     bodies_csv_ = std::make_unique<CsvSeries>(dir_ / "bodies.csv", body_state_columns());
@@ -109,6 +125,23 @@ void RunOutputs::write_snapshot(const Simulation& sim) {
   f.id = p.id;
   snapshots_->write(f);
   last_snapshot_step_ = sim.steps();
+  write_net_files(sim, false);
+}
+
+void RunOutputs::write_net_files(const Simulation& sim, bool final) {
+  const auto& nets = sim.nets();
+  for (std::size_t n = 0; n < nets.size(); ++n) {
+    const CoupledNet& net = nets[n];
+    if (final) {
+      write_knots_csv(dir_ / ("knots_" + net.model.name + ".csv"), net.model, net.initial);
+      write_profile_csv(dir_ / ("profile_" + net.model.name + ".csv"), net.model, net.initial);
+      continue;
+    }
+    const std::string file =
+        "net_" + net.model.name + "_" + std::to_string(snapshots_->count() - 1) + ".vtk";
+    write_net_vtk(dir_ / file, net.model, net.initial);
+    net_vtk_[n].add(file, sim.time());
+  }
 }
 
 void RunOutputs::write_series_row(const Simulation& sim, double wall_s) {
@@ -132,6 +165,10 @@ void RunOutputs::write_series_row(const Simulation& sim, double wall_s) {
                              d.dt_limits.acoustic,
                              wall_s};
   forces_.append_series_values(sim, row);
+  for (const CoupledNet& net : sim.nets()) {
+    row.push_back(max_normal_deflection(net.model, net.initial));
+    row.push_back(max_twine_tension(net.model));
+  }
   series_.append(row);
   if (bodies_csv_) append_body_rows(sim, *bodies_csv_);
   last_series_step_ = sim.steps();
@@ -153,6 +190,7 @@ void RunOutputs::maybe_write(const Simulation& sim, double wall_s) {
 void RunOutputs::write_final(const Simulation& sim, double wall_s) {
   if (snapshots_ && last_snapshot_step_ != sim.steps()) write_snapshot(sim);
   if (last_series_step_ != sim.steps()) write_series_row(sim, wall_s);
+  write_net_files(sim, true);
 }
 
 }  // namespace netsph

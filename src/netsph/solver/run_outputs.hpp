@@ -3,6 +3,7 @@
 //   particles.xdmf + snapshots/*.h5   fluid and boundary particles (ParaView)
 //   series.csv                        global quantities over time, one row per series interval
 //   bodies.csv                        rigid bodies' states and forces (solver/body_forces.hpp)
+//   <net>.vtk.series + net_<net>_NNNN.vtk, knots_<net>.csv, profile_<net>.csv   coupled nets
 //   summary.json                      the run as a whole (rewritten atomically, also on failure)
 #include <filesystem>
 #include <memory>
@@ -11,6 +12,7 @@
 
 #include "netsph/io/csv_series.hpp"
 #include "netsph/io/snapshot_writer.hpp"
+#include "netsph/net/net_output.hpp"
 #include "netsph/solver/body_forces.hpp"
 #include "netsph/solver/simulation.hpp"
 
@@ -45,6 +47,7 @@ class RunOutputs {
 
  private:
   void write_snapshot(const Simulation& sim);
+  void write_net_files(const Simulation& sim, bool final);
   void write_series_row(const Simulation& sim, double wall_s);
 
   std::filesystem::path dir_;
@@ -52,6 +55,7 @@ class RunOutputs {
   BodyForceRecorder forces_;  // before series_: it adds series columns
   CsvSeries series_;
   std::unique_ptr<CsvSeries> bodies_csv_;
+  std::vector<NetVtkSeries> net_vtk_;  // one per coupled net
   double snapshot_every_ = 0, series_every_ = 0;
   double next_snapshot_ = 0, next_series_ = 0;
   std::int64_t last_snapshot_step_ = -1, last_series_step_ = -1;
