@@ -17,11 +17,11 @@ KnotSpringSolver::KnotSpringSolver(NetModel& net) : net_(net) {
 }
 
 double KnotSpringSolver::stable_step() const {
-  std::vector<double> stiffness(net_.knots.size(), 0.0);
+  std::vector<double>& stiffness = stiffness_;
+  stiffness.assign(net_.knots.size(), 0.0);
   for (const NetTwine& t : net_.twines) {
-    const double length = norm(net_.knots[t.b].position - net_.knots[t.a].position);
     // Ahead of the present strain, so that a tightening twine does not outrun the step.
-    const double strain = std::max(0.0, (length - t.rest) / t.rest) * 1.5;
+    const double strain = std::max(0.0, twine_strain(net_, t)) * 1.5;
     const double k = twine_tangent_stiffness(t.law, strain, t.rest);
     stiffness[t.a] += 2 * k;
     stiffness[t.b] += 2 * k;
@@ -93,8 +93,7 @@ double KnotSpringSolver::kinetic_energy() const {
 double KnotSpringSolver::twine_energy() const {
   double e = 0;
   for (const NetTwine& t : net_.twines) {
-    const double length = norm(net_.knots[t.b].position - net_.knots[t.a].position);
-    e += netsph::twine_energy(t.law, (length - t.rest) / t.rest, t.rest);
+    e += netsph::twine_energy(t.law, twine_strain(net_, t), t.rest);
   }
   return e;
 }
@@ -120,19 +119,13 @@ Vec3d KnotSpringSolver::anchor_force(const LoadFunction& loads) const {
 double KnotSpringSolver::max_strain() const {
   double m = 0;
   for (const NetTwine& t : net_.twines) {
-    const double length = norm(net_.knots[t.b].position - net_.knots[t.a].position);
-    m = std::max(m, (length - t.rest) / t.rest);
+    m = std::max(m, twine_strain(net_, t));
   }
   return m;
 }
 
 double KnotSpringSolver::max_tension() const {
-  double m = 0;
-  for (const NetTwine& t : net_.twines) {
-    const double length = norm(net_.knots[t.b].position - net_.knots[t.a].position);
-    m = std::max(m, twine_tension(t.law, (length - t.rest) / t.rest));
-  }
-  return m;
+  return max_twine_tension(net_);
 }
 
 }  // namespace netsph

@@ -62,7 +62,8 @@ class KnotSpringSolver {
   NetModel& net_;
   double max_damping_ratio_ = 0;
   std::vector<Vec3d> forces_;
-  mutable std::vector<Vec3d> scratch_;  ///< loads, reused between calls
+  mutable std::vector<Vec3d> scratch_;     ///< loads, reused between calls
+  mutable std::vector<double> stiffness_;  ///< per-knot stiffness bound, reused
 };
 
 }  // namespace netsph

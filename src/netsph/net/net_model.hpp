@@ -2,6 +2,7 @@
 // A generated net: knots (lumped masses that stand for equivalent cruciform elements) joined by
 // twines (tension-only springs), on a rows x columns grid in the net's plane. Built by
 // net_generator.hpp from a [[net]] table; moved by knot_spring_solver.hpp.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -64,5 +65,17 @@ struct NetModel {
 
   int index(int row, int column) const { return row * columns + column; }
 };
+
+/// Present strain (L - L0) / L0 of a twine (negative when slack).
+inline double twine_strain(const NetModel& net, const NetTwine& t) {
+  return (norm(net.knots[t.b].position - net.knots[t.a].position) - t.rest) / t.rest;
+}
+
+/// Largest twine tension of the net at its present shape, N.
+inline double max_twine_tension(const NetModel& net) {
+  double m = 0;
+  for (const NetTwine& t : net.twines) m = std::max(m, twine_tension(t.law, twine_strain(net, t)));
+  return m;
+}
 
 }  // namespace netsph

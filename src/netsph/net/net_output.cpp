@@ -37,8 +37,7 @@ void write_net_vtk(const std::filesystem::path& file, const NetModel& net,
   s += fmt::format("CELL_DATA {}\nSCALARS tension double 1\nLOOKUP_TABLE default\n",
                    net.twines.size());
   for (const NetTwine& t : net.twines) {
-    const double length = norm(net.knots[t.b].position - net.knots[t.a].position);
-    s += fmt::format("{:.9g}\n", twine_tension(t.law, (length - t.rest) / t.rest));
+    s += fmt::format("{:.9g}\n", twine_tension(t.law, twine_strain(net, t)));
   }
   write_file_atomic(file, s);
 }

@@ -83,15 +83,6 @@ std::vector<CsvColumn> with_force_columns(std::vector<CsvColumn> cols,
   }
   return cols;
 }
-
-double max_twine_tension(const NetModel& net) {
-  double m = 0;
-  for (const NetTwine& t : net.twines) {
-    const double length = norm(net.knots[t.b].position - net.knots[t.a].position);
-    m = std::max(m, twine_tension(t.law, (length - t.rest) / t.rest));
-  }
-  return m;
-}
 }  // namespace
 
 RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots)
