@@ -24,13 +24,7 @@ struct Block {
   void compute() {
     std::vector<std::uint32_t> order;
     grid.sort(p.pos, order);
-    std::vector<Vec3d> s3;
-    std::vector<Vec3f> f3;
-    std::vector<Real> f;
-    std::vector<ParticleKind> k;
-    std::vector<std::uint32_t> u;
-    gather_into(p.pos, order, s3), gather_into(p.vel, order, f3), gather_into(p.rho, order, f);
-    gather_into(p.kind, order, k), gather_into(p.id, order, u);
+    reorder(p, order);
     view.build(p, m, grid.origin());
     red = compute_rates(m, grid, view, p.kind, acc, drho);
   }

@@ -23,10 +23,7 @@ int net_command(const NetArgs& args) {
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);
   std::filesystem::create_directories(out);
-  NetEnvironment env;
-  env.gravity = spec.fluid.gravity;
-  env.water_density = spec.fluid.density;
-  env.knot_buoyancy = spec.net_only();
+  const NetEnvironment env = net_environment(spec);
   for (const NetSpec& ns : spec.nets) {
     NetModel net = generate_net(ns, env);
     const double l = ns.mesh_grouping * ns.twine_length;

@@ -5,6 +5,7 @@
 
 #include "netsph/app/commands.hpp"
 #include "netsph/app/logging.hpp"
+#include "netsph/app/run_results.hpp"
 #include "netsph/app/scene_report.hpp"
 #include "netsph/net/standalone_net_run.hpp"
 #include "netsph/solver/runner.hpp"
@@ -75,6 +76,7 @@ int run_command(const RunArgs& args) {
   std::signal(SIGTERM, SIG_DFL);
 
   for (const auto& w : r.warnings) spdlog::warn("{}", w);
+  log_run_results(r.summary);
   spdlog::info(
       "{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
       r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);

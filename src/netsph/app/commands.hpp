@@ -50,6 +50,17 @@ struct NetArgs {
 };
 int net_command(const NetArgs& args);
 
+struct ValidateArgs {
+  bool quick = false;
+  bool list = false;
+  std::vector<std::string> only;  ///< entry names
+  std::string out_dir = "out/validate";
+  std::string json_path;
+  int threads = 0;
+  bool quiet = false;
+};
+int validate_command(const ValidateArgs& args);
+
 /// Applies --threads (0 keeps the OpenMP default) and returns the thread count in use.
 int apply_threads(int threads);
 

@@ -89,6 +89,19 @@ int main(int argc, char** argv) {
   add_case_options(net_cmd, net.case_choice);
   net_cmd->add_option("-o,--output", net.out_dir, "output folder (default: out/<case name>)");
 
+  ValidateArgs validate;
+  auto* validate_cmd = app.add_subcommand(
+      "validate",
+      "run the paper's validation cases (reduced) and compare with its data and experiments");
+  validate_cmd->add_flag("--quick", validate.quick,
+                         "only the entries that run in a few minutes (the CI subset)");
+  validate_cmd->add_option("--only", validate.only, "entries to run (see --list)")->delimiter(',');
+  validate_cmd->add_flag("--list", validate.list, "list the entries with their run times");
+  validate_cmd->add_option("-o,--output", validate.out_dir, "folder for the runs and the table")
+      ->capture_default_str();
+  validate_cmd->add_option("--json", validate.json_path, "also write the table to this JSON file");
+  validate_cmd->add_option("--threads", validate.threads, "OpenMP threads (0: all cores)");
+
   auto* cases_cmd = app.add_subcommand("cases", "list the built-in cases");
 
   try {
@@ -105,6 +118,10 @@ int main(int argc, char** argv) {
     }
     if (*check_cmd) return check_command(check);
     if (*net_cmd) return net_command(net);
+    if (*validate_cmd) {
+      validate.quiet = quiet;
+      return validate_command(validate);
+    }
     if (*bench_cmd) {
       bench.sizes = parse_sizes(sizes);
       return bench_command(bench);

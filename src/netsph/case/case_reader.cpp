@@ -28,7 +28,7 @@ const std::vector<TableKeys>& schema() {
        {"name", "dimensions", "dp", "h_over_dp", "kernel", "end_time", "cfl", "dt_min", "dt_max"}},
       {"fluid",
        {"density", "sound_speed", "sound_speed_coef", "gamma", "background_pressure", "gravity",
-        "viscosity", "density_diffusion", "shifting"}},
+        "structure_gravity", "viscosity", "density_diffusion", "shifting"}},
       {"domain", {"min", "max", "periodic"}},
       {"fill", {"min", "max", "velocity", "surface_z"}},
       {"wall", {"name", "min", "max", "faces", "layers", "model", "slip", "velocity", "motion"}},
@@ -71,7 +71,10 @@ const std::vector<TableKeys>& schema() {
         "damping_ratio",
         "fixed_edges",
         "sinker",
-        "point_loads"}},
+        "point_loads",
+        "rigid",
+        "reference_velocity"}},
+      {"probe", {"name", "type", "at", "start", "end", "points", "min", "max", "spacing", "every"}},
       {"current", {"velocity", "model", "screen", "normal_drag", "tangential_drag"}},
       {"output", {"snapshots", "snapshot_every", "series_every", "force_window"}},
   };
@@ -88,7 +91,7 @@ const std::vector<std::string_view>& keys_of(std::string_view table) {
 
 std::string header_of(std::string_view table) {
   const bool is_array = table == "fill" || table == "wall" || table == "inlet" ||
-                        table == "outlet" || table == "body" || table == "net";
+                        table == "outlet" || table == "body" || table == "net" || table == "probe";
   return is_array ? fmt::format("[[{}]]", table) : fmt::format("[{}]", table);
 }
 
@@ -152,6 +155,7 @@ CaseSpec CaseReader::read(const std::string& default_name) {
   read_bodies();
   read_nets();
   read_current();
+  read_probes();
   // Shifting keeps the particle distribution regular where open boundaries add and remove
   // particles; a closed case does without unless asked.
   if (!shifting_given_ && (!spec_.inlets.empty() || !spec_.outlets.empty())) {
@@ -286,6 +290,17 @@ void CaseReader::read_fluid() {
   f.background_pressure =
       r.number("background_pressure", NumberRule::closed(0, 1e8, "Pa"), f.background_pressure);
   f.gravity = read_in_plane_vector(r, "gravity", NumberRule::any("m/s^2"), f.gravity);
+  if (const toml::node* node = r.find("structure_gravity")) {
+    if (norm2(f.gravity) > 0) {
+      r.fail_value("structure_gravity", *node,
+                   fmt::format("needs fluid.gravity = [0, 0, 0] (it is {}): with gravity in the "
+                               "fluid, bodies and nets feel their buoyancy through its pressure "
+                               "and their weight from gravity itself",
+                               format_vec3(f.gravity)));
+    }
+    f.structure_gravity =
+        read_in_plane_vector(r, "structure_gravity", NumberRule::any("m/s^2"), Vec3d{});
+  }
   read_viscosity(r);
   read_density_diffusion(r);
   read_shifting(r);

@@ -193,7 +193,7 @@ BodySpec CaseReader::read_body(const toml::table& table, int number) const {
   }
   read_body_shape(r, body);
   body.center = read_position(r, "center", "position [x, y, z] of the body's centre, m");
-  if (spec_.domain.given) check_center_in_domain(r, body.center);
+  check_in_domain(r, "center", body.center);
   body.orientation = read_body_orientation(r, body);
   read_body_motion(r, body);
   read_body_boundary(r, body);
@@ -523,8 +523,10 @@ void CaseReader::read_body_reference(const TomlTableReader& r, BodySpec& body) c
   }
 }
 
-void CaseReader::check_center_in_domain(const TomlTableReader& r, const Vec3d& center) const {
+void CaseReader::check_in_domain(const TomlTableReader& r, std::string_view key,
+                                 const Vec3d& center) const {
   const DomainSpec& d = spec_.domain;
+  if (!d.given) return;
   for (const int axis : used_axes()) {
     const char name = "xyz"[axis];
     std::string problem;
@@ -536,7 +538,7 @@ void CaseReader::check_center_in_domain(const TomlTableReader& r, const Vec3d& c
                             format_number(d.max[axis]));
     }
     if (problem.empty()) continue;
-    r.fail_value("center", *r.find("center"),
+    r.fail_value(key, *r.find(key),
                  fmt::format("must lie inside [domain] (min {}, max {}): {}", format_vec3(d.min),
                              format_vec3(d.max), problem));
   }

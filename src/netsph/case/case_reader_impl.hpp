@@ -122,7 +122,8 @@ class CaseReader {
   void read_body_motion(const TomlTableReader& r, BodySpec& body) const;
   void read_body_boundary(const TomlTableReader& r, BodySpec& body) const;
   void read_body_reference(const TomlTableReader& r, BodySpec& body) const;
-  void check_center_in_domain(const TomlTableReader& r, const Vec3d& center) const;
+  /// `key` (a position) must lie inside [domain] when the case gives one.
+  void check_in_domain(const TomlTableReader& r, std::string_view key, const Vec3d& point) const;
   /// `velocity_key = [u, v, w]` (constant) or `history_key = { times, velocities }`, which
   /// exclude each other: the [[wall]] `velocity`/`motion` and [[body]]
   /// `velocity`/`motion_history` pairs. Empty when neither is given.
@@ -139,6 +140,10 @@ class CaseReader {
   void read_net_sinker(const TomlTableReader& r, NetSpec& net) const;
   void read_net_point_loads(const TomlTableReader& r, NetSpec& net) const;
   void read_current();
+
+  // case_reader_probes.cpp
+  void read_probes();
+  ProbeSpec read_probe(const toml::table& table, int number) const;
   /// dp may be left out of a standalone net case (nets, no fluid); everything else needs it.
   void require_dp() const;
 

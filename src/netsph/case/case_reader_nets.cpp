@@ -118,6 +118,13 @@ NetSpec CaseReader::read_net(const toml::table& table, int number) const {
   read_net_edges(r, net);
   read_net_sinker(r, net);
   read_net_point_loads(r, net);
+  net.rigid = r.boolean("rigid", false);
+  if (net.rigid && r.has("fixed_edges")) {
+    r.fail_value("fixed_edges", *r.find("fixed_edges"),
+                 "cannot be combined with rigid = true, which anchors every knot");
+  }
+  net.reference_velocity = r.optional_number("reference_velocity", NumberRule::positive("m/s"));
+  if (!net.reference_velocity) net.reference_velocity = spec_.uniform_inflow();
   return net;
 }
 

@@ -43,6 +43,11 @@ struct FluidSpec {
   double gamma = 7.0;  ///< Tait exponent
   double background_pressure = 0;  ///< Pa, added to the equation of state (closed flows)
   Vec3d gravity{0, 0, -9.81};      ///< m/s^2
+  /// Gravity on nets and floating bodies when the fluid itself runs without gravity (a closed
+  /// duct with no free surface, where c0 can be set from the flow speed alone). They then get
+  /// their weight less the buoyancy of the volume they stand for as a constant force, since the
+  /// fluid has no hydrostatic pressure to give it. Only with gravity = [0, 0, 0].
+  std::optional<Vec3d> structure_gravity;
   ViscosityModel viscosity = ViscosityModel::Artificial;
   double alpha = 0.01;                ///< artificial viscosity coefficient
   double kinematic_viscosity = 1e-6;  ///< nu, m^2/s, for the laminar model
@@ -200,6 +205,11 @@ struct NetSpec {
   std::optional<std::array<double, 2>> tension_law;
   double damping_ratio = 0.5;         ///< zeta of each twine's axial mode
   std::array<bool, 4> fixed_edges{};  ///< bottom, top, left, right
+  /// Every knot anchored: a rigid net whose loads are measured (Shi et al. 2024, 3.2).
+  bool rigid = false;
+  /// Current speed for the net's Cd = Fx / (0.5 rho U^2 A_outline), m/s. Default: the inlet's
+  /// velocity when the case has one uniform [[inlet]] (coupled nets), else none.
+  std::optional<double> reference_velocity;
   SinkerSpec sinker;
   std::vector<NetPointLoad> point_loads;
   SourceLocation where;
@@ -214,6 +224,25 @@ struct CurrentSpec {
   double normal_drag = 1.2;      ///< Morison Cn (Bessonneau & Marichal 1998)
   double tangential_drag = 0.1;  ///< Morison Ct
   SourceLocation where;
+};
+
+/// [[probe]]: where the fluid is sampled (Shepard-corrected SPH interpolation,
+/// sph/shepard.hpp) during a run, written to probes/<name>.csv, with time averages over the
+/// force window in probes/<name>_mean.csv.
+enum class ProbeType { Point, Line, Plane };
+
+struct ProbeSpec {
+  std::string name;  ///< file name stem; default "probe<N>"
+  ProbeType type = ProbeType::Point;
+  /// Point: a = the point. Line: a -> b. Plane: the axis-aligned rectangle with corners a, b
+  /// (equal on exactly one axis, the plane's normal; y in 2D).
+  Vec3d a{}, b{};
+  int points = 0;      ///< line: points from a to b, both included (>= 2)
+  double spacing = 0;  ///< plane: distance between points on both in-plane axes, m
+  double every = 0;    ///< s between rows of probes/<name>.csv
+  SourceLocation where;
+  /// The sampled points, in output order (plane: first in-plane axis fastest).
+  std::vector<Vec3d> sample_points() const;
 };
 
 /// [output]
@@ -237,8 +266,15 @@ struct CaseSpec {
   std::vector<OpenBoundarySpec> outlets;
   std::vector<BodySpec> bodies;
   std::vector<NetSpec> nets;
+  std::vector<ProbeSpec> probes;
   CurrentSpec current;
   OutputSpec output;
+  /// The current's speed when the case has exactly one [[inlet]] with a uniform velocity
+  /// (the reference for net Cd and probe velocity reductions), m/s.
+  std::optional<double> uniform_inflow() const {
+    if (inlets.size() != 1 || !inlets[0].velocity || !inlets[0].profile_z.empty()) return {};
+    return inlets[0].velocity;
+  }
   /// A standalone net run: nets, no fluid (no [[fill]]); dp is then not needed.
   bool net_only() const { return fills.empty() && !nets.empty(); }
 };

@@ -225,3 +225,26 @@ std::vector<Vec3d> body_lattice(const Shape& s, double dp, int shell_layers,
 }
 
 }  // namespace netsph
+
+namespace netsph {
+
+Shape resolvable_shape(const Shape& s, double dp, int dims) {
+  Shape r = s;
+  switch (s.type) {
+    case ShapeType::Box:
+      for (int a = 0; a < 3; ++a)
+        if (!(dims == 2 && a == 1)) r.half[a] = std::max(r.half[a], dp);
+      break;
+    case ShapeType::Cylinder:
+      r.half.x = std::max(r.half.x, dp);
+      r.radius = std::max(r.radius, dp);
+      break;
+    case ShapeType::Sphere:
+    case ShapeType::Cruciform:
+      r.radius = std::max(r.radius, dp);
+      break;
+  }
+  return r;
+}
+
+}  // namespace netsph

@@ -47,6 +47,14 @@ struct Shape {
   Vec3d inertia_per_density(int dims) const;
 };
 
+/// The shape as SPH particles resolve it: every dimension at least 2 dp (box half lengths,
+/// cylinder half length and radius, sphere and twine radius at least dp). A body thinner than
+/// that would be one particle layer thick, and mDBC gives each boundary particle one ghost
+/// node, on one side: the fluid on the other side would then feel the far side's pressure,
+/// and the pressure drag of a thin plate would be about halved. Two layers give each face its
+/// own. (dims = 2: the y extent is left alone.)
+Shape resolvable_shape(const Shape& s, double dp, int dims);
+
 /// Body particles in the local frame: a dp lattice along the given local-frame unit axes (3 in
 /// 3D: the local axes, body-fitted; 2 in 2D: the local directions of world x and z, so the
 /// lattice lies in the simulation plane), centred on the shape and offset by dp/2 along axes

@@ -31,11 +31,27 @@ KnotGeometry scaled_knot(const CruciformElement& whole, KnotShape shape, double 
 }
 
 bool on_fixed_edge(const NetSpec& spec, int row, int column, int rows, int columns) {
-  return (spec.fixed_edges[0] && row == 0) || (spec.fixed_edges[1] && row == rows - 1) ||
-         (spec.fixed_edges[2] && column == 0) || (spec.fixed_edges[3] && column == columns - 1);
+  return spec.rigid || (spec.fixed_edges[0] && row == 0) ||
+         (spec.fixed_edges[1] && row == rows - 1) || (spec.fixed_edges[2] && column == 0) ||
+         (spec.fixed_edges[3] && column == columns - 1);
 }
 
 }  // namespace
+
+NetEnvironment net_environment(const CaseSpec& spec) {
+  NetEnvironment env;
+  env.water_density = spec.fluid.density;
+  env.gravity = spec.fluid.gravity;
+  if (spec.net_only()) {
+    env.knot_buoyancy = true;
+  } else if (norm2(spec.fluid.gravity) > 0 || !spec.fluid.structure_gravity) {
+    env.knot_buoyancy = false;
+  } else {
+    env.gravity = *spec.fluid.structure_gravity;
+    env.knot_buoyancy = true;
+  }
+  return env;
+}
 
 NetModel generate_net(const NetSpec& spec, const NetEnvironment& env) {
   constexpr double pi = std::numbers::pi;
@@ -102,10 +118,12 @@ NetModel generate_net(const NetSpec& spec, const NetEnvironment& env) {
       net.netting_mass += netting_mass;
       k.mass = netting_mass;
       k.constant_force = env.gravity * netting_mass;
-      if (env.knot_buoyancy) {
-        k.constant_force -=
-            env.gravity * (env.water_density * netting_mass / spec.material_density);
-      }
+      const double netting_volume = netting_mass / spec.material_density;
+      // Resolved knots: the fluid's pressure gives rho_w g V_knot; the rest makes it the
+      // netting's buoyancy (NetEnvironment::knot_buoyancy).
+      const double buoyant_volume =
+          env.knot_buoyancy ? netting_volume : netting_volume - k.geometry.volume;
+      k.constant_force -= env.gravity * (env.water_density * buoyant_volume);
       if (row == 0 && sinker.length > 0) {
         const double carried = (edge_column ? 0.5 : 1.0) * net.spacing_across;
         k.sinker_length = carried * sinker.length / spec.width;

@@ -19,10 +19,19 @@ struct NetEnvironment {
   Vec3d gravity{0, 0, -9.81};   ///< m/s^2
   double water_density = 1000;  ///< kg/m^3
   /// Add each knot's buoyancy (rho_w g V of the netting it stands for). False when the knots
-  /// are resolved by SPH particles, whose pressure carries the buoyancy itself. The sinker,
-  /// never resolved, always gets its buoyancy.
+  /// are resolved by SPH particles in a fluid with gravity, whose pressure carries a buoyancy
+  /// rho_w g V_knot on the numerical knot's volume; the generator then adds
+  /// rho_w g (V_knot - V_netting) so that the total is the netting's buoyancy (with mesh
+  /// grouping the numerical knot holds lambda times the volume of the lambda^2 real elements
+  /// it stands for). The sinker, never resolved, always gets its buoyancy.
   bool knot_buoyancy = true;
 };
+
+/// The environment of a case's nets: a standalone net (no fluid) hangs under fluid.gravity
+/// with its buoyancy added; knots resolved in a fluid with gravity get their buoyancy from the
+/// fluid's pressure; in a fluid without gravity, fluid.structure_gravity (if given) gives
+/// knots and sinkers their weight less buoyancy directly.
+NetEnvironment net_environment(const CaseSpec& spec);
 
 /// Throws netsph::Error (naming the [[net]] table) when the outline is not a whole number of
 /// numerical meshes within 5%.

@@ -73,10 +73,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   const double speed = norm(loads.velocity);
   const Vec3d flow = speed > 0 ? loads.velocity / speed : Vec3d{1, 0, 0};
 
-  NetEnvironment env;
-  env.gravity = spec.fluid.gravity;
-  env.water_density = spec.fluid.density;
-  env.knot_buoyancy = true;
+  const NetEnvironment env = net_environment(spec);
   std::vector<NetState> nets;
   nets.reserve(spec.nets.size());
   std::vector<CsvColumn> columns = {{"time", "s"}, {"substeps", ""}};

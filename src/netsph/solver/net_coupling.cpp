@@ -8,15 +8,6 @@
 namespace netsph {
 namespace {
 
-/// Knots resolved by particles get their buoyancy from the fluid pressure.
-NetEnvironment coupled_environment(const CaseSpec& spec) {
-  NetEnvironment env;
-  env.gravity = spec.fluid.gravity;
-  env.water_density = spec.fluid.density;
-  env.knot_buoyancy = false;
-  return env;
-}
-
 BodySpec knot_body(const NetSpec& net_spec, const NetModel& net, const NetKnot& k) {
   BodySpec b;
   b.name = fmt::format("{}.knot{}_{}", net.name, k.row, k.column);
@@ -46,6 +37,9 @@ BodySpec knot_body(const NetSpec& net_spec, const NetModel& net, const NetKnot& 
   b.motion = k.fixed ? BodyMotion::Fixed : BodyMotion::Floating;
   b.mass = k.mass;
   b.layers = -1;  // knots are thin: solid
+  // Cd of the whole net on its outline (force groups take the first body's reference).
+  b.reference_velocity = net_spec.reference_velocity;
+  b.reference_area = net_spec.width * net_spec.height;
   return b;
 }
 
@@ -54,7 +48,7 @@ BodySpec knot_body(const NetSpec& net_spec, const NetModel& net, const NetKnot& 
 CaseSpec spec_with_net_knots(const CaseSpec& spec) {
   CaseSpec expanded = spec;
   if (spec.net_only()) return expanded;
-  const NetEnvironment env = coupled_environment(spec);
+  const NetEnvironment env = net_environment(spec);
   for (const NetSpec& ns : spec.nets) {
     const NetModel net = generate_net(ns, env);
     for (const NetKnot& k : net.knots) expanded.bodies.push_back(knot_body(ns, net, k));
@@ -65,7 +59,7 @@ CaseSpec spec_with_net_knots(const CaseSpec& spec) {
 std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
   std::vector<CoupledNet> nets;
   if (expanded.net_only() || expanded.nets.empty()) return nets;
-  const NetEnvironment env = coupled_environment(expanded);
+  const NetEnvironment env = net_environment(expanded);
   std::size_t knots = 0;
   for (const NetSpec& ns : expanded.nets) {
     CoupledNet c;

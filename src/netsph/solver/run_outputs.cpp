@@ -88,6 +88,9 @@ std::vector<CsvColumn> with_force_columns(std::vector<CsvColumn> cols,
 RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots)
     : dir_(std::move(dir)),
       forces_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
+      nets_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
+      probes_((std::filesystem::create_directories(dir_), sim), dir_, force_window(sim.spec())[0],
+              force_window(sim.spec())[1]),
       series_((std::filesystem::create_directories(dir_), dir_ / "series.csv"),
               with_force_columns(series_columns(sim.model().dims), forces_, sim)) {
   for (const CoupledNet& net : sim.nets())
@@ -182,6 +185,7 @@ void RunOutputs::write_final(const Simulation& sim, double wall_s) {
   if (snapshots_ && last_snapshot_step_ != sim.steps()) write_snapshot(sim);
   if (last_series_step_ != sim.steps()) write_series_row(sim, wall_s);
   write_net_files(sim, true);
+  probes_.write_means();
 }
 
 }  // namespace netsph

@@ -4,6 +4,7 @@
 //   series.csv                        global quantities over time, one row per series interval
 //   bodies.csv                        rigid bodies' states and forces (solver/body_forces.hpp)
 //   <net>.vtk.series + net_<net>_NNNN.vtk, knots_<net>.csv, profile_<net>.csv   coupled nets
+//   probes/<name>.csv, probes/<name>_mean.csv   velocity probes (solver/probes.hpp)
 //   summary.json                      the run as a whole (rewritten atomically, also on failure)
 #include <filesystem>
 #include <memory>
@@ -14,6 +15,8 @@
 #include "netsph/io/snapshot_writer.hpp"
 #include "netsph/net/net_output.hpp"
 #include "netsph/solver/body_forces.hpp"
+#include "netsph/solver/net_records.hpp"
+#include "netsph/solver/probes.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph {
@@ -37,10 +40,19 @@ class RunOutputs {
   void maybe_write(const Simulation& sim, double wall_s);
   /// Writes the final snapshot and series row unless this exact step was written already.
   void write_final(const Simulation& sim, double wall_s);
-  /// Called after every step: time averages of body forces.
-  void after_step(const Simulation& sim) { forces_.accumulate(sim); }
+  /// Called after every step: time averages of body forces, probe samples.
+  void after_step(const Simulation& sim) {
+    forces_.accumulate(sim);
+    nets_.accumulate(sim);
+    probes_.after_step(sim);
+  }
   /// Body force averages for summary.json (an empty array without bodies).
   nlohmann::json body_summary() const { return forces_.summary(); }
+  /// Coupled nets for summary.json (an empty array without nets).
+  nlohmann::json net_summary(const Simulation& sim) const { return nets_.summary(sim); }
+  /// Probes for summary.json (an empty array without probes).
+  nlohmann::json probe_summary() const { return probes_.summary(); }
+  const ProbeRecorder& probes() const { return probes_; }
 
   int snapshots_written() const { return snapshots_ ? snapshots_->count() : 0; }
   const std::filesystem::path& dir() const { return dir_; }
@@ -53,6 +65,8 @@ class RunOutputs {
   std::filesystem::path dir_;
   std::unique_ptr<SnapshotWriter> snapshots_;
   BodyForceRecorder forces_;  // before series_: it adds series columns
+  NetRecorder nets_;
+  ProbeRecorder probes_;
   CsvSeries series_;
   std::unique_ptr<CsvSeries> bodies_csv_;
   std::vector<NetVtkSeries> net_vtk_;  // one per coupled net

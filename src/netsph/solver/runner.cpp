@@ -84,6 +84,8 @@ nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const Run
                   {"xdmf", r.snapshots > 0 ? "particles.xdmf" : ""},
                   {"series", "series.csv"}};
   j["bodies"] = outputs.body_summary();
+  j["nets"] = outputs.net_summary(sim);
+  j["probes"] = outputs.probe_summary();
   j["warnings"] = r.warnings;
   return j;
 }
@@ -155,8 +157,8 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
     r.warnings.push_back(std::string("final output failed: ") + e.what());
   }
   r.snapshots = outputs.snapshots_written();
-  write_file_atomic(opt.out_dir / "summary.json",
-                    summary_json(sim, r, opt, outputs).dump(2) + "\n");
+  r.summary = summary_json(sim, r, opt, outputs);
+  write_file_atomic(opt.out_dir / "summary.json", r.summary.dump(2) + "\n");
   return r;
 }
 

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "netsph/solver/simulation.hpp"
@@ -29,6 +31,7 @@ struct RunReport {
   double bytes_per_particle = 0;
   int snapshots = 0;
   std::vector<std::string> warnings;
+  nlohmann::json summary;  ///< what summary.json holds
   bool ok() const { return status == "completed" || status == "step limit"; }
 };
 

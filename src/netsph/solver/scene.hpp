@@ -28,6 +28,7 @@ struct Scene {
   std::vector<SceneSource> sources;
   std::size_t removed_overlaps = 0;   ///< fluid particles dropped for sitting on another particle
   std::size_t removed_in_bodies = 0;  ///< fluid particles dropped for lying inside a body
+  std::size_t thickened_bodies = 0;   ///< bodies resolved thicker than given (2 dp at least)
   std::vector<std::string> warnings;
 };
 

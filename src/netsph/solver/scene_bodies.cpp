@@ -12,7 +12,7 @@
 namespace netsph {
 namespace {
 
-Shape shape_of(const BodySpec& b) {
+Shape nominal_shape(const BodySpec& b) {
   switch (b.shape) {
     case BodyShape::Box:
       return Shape::box(b.lengths);
@@ -24,6 +24,11 @@ Shape shape_of(const BodySpec& b) {
       return Shape::cruciform(b.length, b.diameter);
   }
   return {};
+}
+
+/// The shape the particles resolve (geometry/shapes.hpp: every dimension at least 2 dp).
+Shape shape_of(const BodySpec& b, const CaseSpec& spec) {
+  return resolvable_shape(nominal_shape(b), spec.simulation.dp, spec.simulation.dimensions);
 }
 
 int shell_layers(const BodySpec& b, const CaseSpec& spec) {
@@ -38,9 +43,14 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
   const int dims = spec.simulation.dimensions;
   const double dp = spec.simulation.dp;
   ParticleSet& p = scene.particles;
+  std::string first_thickened;
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     const BodySpec& b = spec.bodies[bi];
-    const Shape shape = shape_of(b);
+    const Shape nominal = nominal_shape(b);
+    const Shape shape = shape_of(b, spec);
+    if (shape.half != nominal.half || shape.radius != nominal.radius) {
+      if (scene.thickened_bodies++ == 0) first_thickened = b.name + " (" + b.where.str() + ")";
+    }
     // 2D: the particles must lie in the x-z plane; body_particles needs its local directions.
     const std::vector<Vec3d> plane{rotate_inverse(b.orientation, {1, 0, 0}),
                                    rotate_inverse(b.orientation, {0, 0, 1})};
@@ -59,7 +69,7 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
     body.inertia.dims = dims;
     // Fixed and prescribed bodies never use their mass; give them the fluid's so that
     // reports stay meaningful.
-    const double measure = shape.measure(dims);
+    const double measure = nominal.measure(dims);
     const double density =
         b.mass ? *b.mass / measure : (b.density > 0 ? b.density : spec.fluid.density);
     body.inertia.mass = density * measure;
@@ -69,6 +79,12 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
     body.state.q = b.orientation;
     body.state.vel = b.motion == BodyMotion::Floating ? b.initial_velocity : b.velocity.at(0.0);
     body.start = body.state;
+    // A fluid without gravity gives no buoyancy: structure_gravity acts on the body's weight
+    // less the fluid it displaces.
+    if (spec.fluid.structure_gravity && b.motion == BodyMotion::Floating) {
+      body.external_force =
+          *spec.fluid.structure_gravity * (body.inertia.mass - spec.fluid.density * measure);
+    }
     body.first_id = p.next_id;
     body.count = static_cast<std::uint32_t>(local.size());
     body.offsets.reserve(local.size());
@@ -85,6 +101,13 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
     scene.sources.push_back({b.name, local.size()});
     scene.bodies.push_back(std::move(body));
   }
+  if (scene.thickened_bodies > 0) {
+    scene.warnings.push_back(fmt::format(
+        "{} bod{} thinner than 2 dp = {} m somewhere (first: {}): resolved 2 dp thick there, one "
+        "particle layer per face, so that mDBC sees the pressure on both faces",
+        scene.thickened_bodies, scene.thickened_bodies == 1 ? "y is" : "ies are", 2 * dp,
+        first_thickened));
+  }
 }
 
 std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
@@ -94,7 +117,7 @@ std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
   std::vector<Shape> shapes;
   std::vector<double> reach;  // bounding radius + dp
   for (const auto& b : spec.bodies) {
-    shapes.push_back(shape_of(b));
+    shapes.push_back(shape_of(b, spec));
     reach.push_back(norm(shapes.back().bounding_half()) + dp);
   }
   std::vector<char> keep(p.size(), 1);

@@ -35,6 +35,12 @@ Simulation::Simulation(const CaseSpec& spec)
   shift_params_.dims = static_cast<Real>(m.dims);
   shift_params_.max_component = static_cast<Real>(0.1 * spec.simulation.dp);
   contact_model_ = ContactModel::make(spec.simulation.dp, scene_.sound_speed);
+  // Knots carry their weight and buoyancy in the knot-spring solver (constant forces), not as
+  // body forces.
+  for (const CoupledNet& net : nets_) {
+    for (std::size_t k = 0; k < net.model.knots.size(); ++k)
+      scene_.bodies[net.first_body + k].external_force = {};
+  }
 }
 
 void Simulation::build_view(bool half_step) {

@@ -87,4 +87,18 @@ void gather_into(std::vector<T>& v, std::span<const std::uint32_t> order, std::v
   v.swap(scratch);
 }
 
+/// Puts every array of `p` in the order given (sorted slot -> old index), dropping the
+/// particles `order` leaves out. Allocates its scratch: for set-up code and tests; the solver
+/// reorders with reused scratch (solver/simulation.cpp).
+inline void reorder(ParticleSet& p, std::span<const std::uint32_t> order) {
+  std::vector<Vec3d> d3;
+  std::vector<Vec3f> f3;
+  std::vector<Real> f;
+  std::vector<ParticleKind> k;
+  std::vector<std::uint32_t> u;
+  gather_into(p.pos, order, d3), gather_into(p.vel, order, f3), gather_into(p.rho, order, f);
+  gather_into(p.kind, order, k), gather_into(p.id, order, u), gather_into(p.group, order, u);
+  gather_into(p.ghost, order, f3);
+}
+
 }  // namespace netsph

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 
+#include "netsph/backend/cpu/point_neighbours.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/ghost_interpolation.hpp"
@@ -26,26 +27,12 @@ enum class GhostSources : std::uint8_t {
 template <class Kernel>
 GhostValue ghost_value_at(const FluidModel& m, const CellGrid& grid, const ParticleSet& p,
                           const Vec3d& point, GhostSources sources) {
-  const Vec3d ghost = grid.wrapped(point);
-  const std::int64_t c = grid.cell_of(ghost);
-  if (c < 0) return {};
-  NeighbourRanges ranges;
-  const int nr = grid.neighbour_ranges(c, ranges);
   GhostSums sums;
-  for (int k = 0; k < nr; ++k) {
-    const Vec3d shift(ranges[k].shift);
-    for (std::uint32_t j = ranges[k].begin; j < ranges[k].end; ++j) {
-      const ParticleKind kind = p.kind[j];
-      if (is_solid(kind)) continue;
-      if (sources == GhostSources::FluidOnly && kind != ParticleKind::Fluid) continue;
-      const Vec3f d(p.pos[j] + shift - ghost);
-      const Real r2 = norm2(d);
-      if (!(r2 < m.support2)) continue;
-      const Real r = std::sqrt(r2);
-      ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
-                       kernel_grad_factor<Kernel>(m.kernel, r), m.mass, p.rho[j], p.vel[j]);
-    }
-  }
+  visit_point_neighbours(m, grid, p, point, [&](std::uint32_t j, const Vec3f& d, Real r) {
+    if (sources == GhostSources::FluidOnly && p.kind[j] != ParticleKind::Fluid) return;
+    ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
+                     kernel_grad_factor<Kernel>(m.kernel, r), m.mass, p.rho[j], p.vel[j]);
+  });
   return ghost_solve(sums, m.dims);
 }
 

@@ -1,0 +1,62 @@
+#include "netsph/app/run_results.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace netsph::app {
+namespace {
+
+std::string window_text(const nlohmann::json& j) {
+  if (!j.contains("window_s")) return "";
+  return fmt::format("{:.3g}-{:.3g} s", j["window_s"][0].get<double>(),
+                     j["window_s"][1].get<double>());
+}
+
+}  // namespace
+
+void log_run_results(const nlohmann::json& summary) {
+  for (const auto& g : summary.value("bodies", nlohmann::json::array())) {
+    if (!g.contains("force_N")) continue;
+    const auto& f = g["force_N"];
+    std::string cd;
+    if (g.contains("cd")) {
+      cd =
+          fmt::format(", Cd {:.4f} (U = {:.4g} m/s, A = {:.4g} m^2)", g["cd"].get<double>(),
+                      g["reference_velocity_m_s"].get<double>(), g["reference_area"].get<double>());
+    }
+    spdlog::info("{} over {}: drag {:.4g} N (force [{:.4g}, {:.4g}, {:.4g}] N){}",
+                 g["group"].get<std::string>(), window_text(g), f[0].get<double>(),
+                 f[0].get<double>(), f[1].get<double>(), f[2].get<double>(), cd);
+  }
+  for (const auto& n : summary.value("nets", nlohmann::json::array())) {
+    const auto& b = n["final_bottom_displacement_m"];
+    spdlog::info(
+        "net {}: largest deflection along its normal {:.4g} m (mean over {}), {:.4g} m at the end; "
+        "bottom edge moved [{:.3g}, {:.3g}, {:.3g}] m; largest twine tension {:.4g} N",
+        n["name"].get<std::string>(), n.value("mean_max_deflection_m", 0.0), window_text(n),
+        n["final_max_deflection_m"].get<double>(), b[0].get<double>(), b[1].get<double>(),
+        b[2].get<double>(), n.value("mean_max_tension_N", 0.0));
+  }
+  for (const auto& p : summary.value("probes", nlohmann::json::array())) {
+    const std::string name = p["name"].get<std::string>();
+    if (p.contains("mean_velocity_m_s")) {
+      const auto& u = p["mean_velocity_m_s"];
+      std::string reduction;
+      if (p.contains("velocity_reduction"))
+        reduction =
+            fmt::format(", {:.1f}% below the inflow", 100 * p["velocity_reduction"].get<double>());
+      spdlog::info("probe {} over {}: mean velocity [{:.4g}, {:.4g}, {:.4g}] m/s{}", name,
+                   window_text(p), u[0].get<double>(), u[1].get<double>(), u[2].get<double>(),
+                   reduction);
+    } else if (p.contains("largest_velocity_reduction")) {
+      const auto& x = p["largest_reduction_at_m"];
+      spdlog::info(
+          "probe {} over {}: flow slowed by up to {:.1f}% (at [{:.3g}, {:.3g}, {:.3g}] m); "
+          "profile in {}",
+          name, window_text(p), 100 * p["largest_velocity_reduction"].get<double>(),
+          x[0].get<double>(), x[1].get<double>(), x[2].get<double>(),
+          p["mean_file"].get<std::string>());
+    }
+  }
+}
+
+}  // namespace netsph::app

@@ -1,0 +1,36 @@
+#pragma once
+// Shepard-corrected sampling of the fluid at probe points on the CPU (sph/shepard.hpp): the
+// velocity, pressure and density at each point from the fluid particles (not the buffers,
+// which hold imposed states, nor walls and bodies) within the kernel support.
+#include <cstdint>
+#include <span>
+
+#include "netsph/backend/cpu/point_neighbours.hpp"
+#include "netsph/sph/kernels.hpp"
+#include "netsph/sph/shepard.hpp"
+
+namespace netsph {
+
+/// values[k] = the interpolation at points[k] (coverage 0 outside the grid or with no fluid in
+/// reach). Pressures are gauge (the background pressure removed).
+inline void sample_points(const FluidModel& m, const CellGrid& grid, const ParticleSet& p,
+                          std::span<const Vec3d> points, std::span<ShepardValue> values) {
+  const auto n = static_cast<std::int64_t>(points.size());
+  with_kernel(m.kernel_type, [&](auto kernel) {
+    using K = decltype(kernel);
+#pragma omp parallel for schedule(dynamic, 64)
+    for (std::int64_t i = 0; i < n; ++i) {
+      ShepardSums sums;
+      visit_point_neighbours(m, grid, p, points[i], [&](std::uint32_t j, const Vec3f&, Real r) {
+        if (p.kind[j] != ParticleKind::Fluid) return;
+        const Real rho = p.rho[j];
+        shepard_accumulate(sums, kernel_value<K>(m.kernel, r), m.mass, rho, p.vel[j],
+                           m.eos.pressure(rho) - m.eos.p_background);
+      });
+      values[i] = shepard_value(sums);
+    }
+    return 0;
+  });
+}
+
+}  // namespace netsph

@@ -1,0 +1,214 @@
+#include "netsph/solver/probes.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "netsph/backend/cpu/probe_pass.hpp"
+#include "netsph/solver/run_outputs.hpp"
+
+namespace netsph {
+
+struct ProbeRecorder::Probe {
+  ProbeSpec spec;
+  std::vector<Vec3d> points;
+  std::vector<ShepardValue> values;
+  std::vector<ProbeAverage> sums;
+  std::unique_ptr<CsvSeries> csv;
+  double every = 0;
+  double next_write = 0;
+};
+
+namespace {
+
+std::vector<CsvColumn> probe_columns() {
+  return {{"time", "s"}, {"point", ""}, {"x", "m"},    {"y", "m"},  {"z", "m"},
+          {"ux", "m/s"}, {"uy", "m/s"}, {"uz", "m/s"}, {"p", "Pa"}, {"coverage", ""}};
+}
+
+const char* type_name(ProbeType t) {
+  switch (t) {
+    case ProbeType::Point:
+      return "point";
+    case ProbeType::Line:
+      return "line";
+    case ProbeType::Plane:
+      return "plane";
+  }
+  return "?";
+}
+
+}  // namespace
+
+ProbeRecorder::ProbeRecorder(const Simulation& sim, const std::filesystem::path& dir,
+                             double window_start, double window_end)
+    : dir_(dir / "probes"),
+      t0_(window_start),
+      t1_(window_end),
+      sample_every_(series_interval(sim.spec())),
+      inflow_(sim.spec().uniform_inflow()) {
+  const CaseSpec& spec = sim.spec();
+  if (spec.probes.empty()) return;
+  std::filesystem::create_directories(dir_);
+  for (const ProbeSpec& ps : spec.probes) {
+    auto pr = std::make_unique<Probe>();
+    pr->spec = ps;
+    pr->points = ps.sample_points();
+    pr->values.resize(pr->points.size());
+    pr->sums.resize(pr->points.size());
+    pr->every = ps.every > 0 ? ps.every
+                             : (ps.type == ProbeType::Point ? series_interval(spec)
+                                                            : snapshot_interval(spec));
+    pr->next_write = sim.time();
+    pr->csv = std::make_unique<CsvSeries>(dir_ / (ps.name + ".csv"), probe_columns());
+    probes_.push_back(std::move(pr));
+  }
+  next_sample_ = sim.time();
+}
+
+ProbeRecorder::~ProbeRecorder() = default;
+
+void ProbeRecorder::after_step(const Simulation& sim) {
+  if (probes_.empty()) return;
+  const double t = sim.time() * (1 + 1e-12);
+  const bool sample = t >= next_sample_;
+  const bool in_window = sample && sim.time() >= t0_ && sim.time() <= t1_;
+  if (sample) {
+    while (next_sample_ <= t) next_sample_ += sample_every_;
+  }
+  for (auto& pr : probes_) {
+    const bool write = t >= pr->next_write;
+    if (!write && !in_window) continue;
+    // The grid is the one sorted at the start of the last step: its cells are searched with a
+    // skin that covers the particles' motion over a step (neighbors/cell_grid.hpp).
+    sample_points(sim.model(), sim.grid(), sim.particles(), pr->points, pr->values);
+    if (in_window) {
+      for (std::size_t k = 0; k < pr->points.size(); ++k) {
+        const ShepardValue& v = pr->values[k];
+        if (!(v.coverage > 0)) continue;
+        ProbeAverage& s = pr->sums[k];
+        s.velocity += v.velocity;
+        s.pressure += v.pressure;
+        s.coverage += v.coverage;
+        ++s.samples;
+      }
+    }
+    if (write) {
+      for (std::size_t k = 0; k < pr->points.size(); ++k) {
+        const ShepardValue& v = pr->values[k];
+        const Vec3d& x = pr->points[k];
+        const bool seen = v.coverage > 0;
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        const double row[] = {sim.time(),
+                              static_cast<double>(k),
+                              x.x,
+                              x.y,
+                              x.z,
+                              seen ? v.velocity.x : nan,
+                              seen ? v.velocity.y : nan,
+                              seen ? v.velocity.z : nan,
+                              seen ? v.pressure : nan,
+                              v.coverage};
+        pr->csv->append(row);
+      }
+      while (pr->next_write <= t) pr->next_write += pr->every;
+    }
+  }
+}
+
+const std::vector<Vec3d>& ProbeRecorder::points(std::size_t index) const {
+  return probes_.at(index)->points;
+}
+
+const std::vector<ProbeAverage>& ProbeRecorder::averages(std::size_t index) const {
+  return probes_.at(index)->sums;
+}
+
+namespace {
+ProbeAverage mean_of(const ProbeAverage& s) {
+  ProbeAverage m = s;
+  if (s.samples > 0) {
+    const double inv = 1.0 / s.samples;
+    m.velocity = s.velocity * inv;
+    m.pressure = s.pressure * inv;
+    m.coverage = s.coverage * inv;
+  }
+  return m;
+}
+}  // namespace
+
+void ProbeRecorder::write_means() const {
+  for (const auto& pr : probes_) {
+    CsvSeries csv(dir_ / (pr->spec.name + "_mean.csv"), {{"point", ""},
+                                                         {"s", "m"},
+                                                         {"x", "m"},
+                                                         {"y", "m"},
+                                                         {"z", "m"},
+                                                         {"ux", "m/s"},
+                                                         {"uy", "m/s"},
+                                                         {"uz", "m/s"},
+                                                         {"speed", "m/s"},
+                                                         {"p", "Pa"},
+                                                         {"coverage", ""},
+                                                         {"samples", ""}});
+    for (std::size_t k = 0; k < pr->points.size(); ++k) {
+      const ProbeAverage m = mean_of(pr->sums[k]);
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const bool seen = m.samples > 0;
+      const Vec3d& x = pr->points[k];
+      const double row[] = {static_cast<double>(k),
+                            norm(x - pr->points.front()),
+                            x.x,
+                            x.y,
+                            x.z,
+                            seen ? m.velocity.x : nan,
+                            seen ? m.velocity.y : nan,
+                            seen ? m.velocity.z : nan,
+                            seen ? norm(m.velocity) : nan,
+                            seen ? m.pressure : nan,
+                            m.coverage,
+                            static_cast<double>(m.samples)};
+      csv.append(row);
+    }
+  }
+}
+
+nlohmann::json ProbeRecorder::summary() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& pr : probes_) {
+    nlohmann::json j;
+    j["name"] = pr->spec.name;
+    j["type"] = type_name(pr->spec.type);
+    j["points"] = pr->points.size();
+    j["file"] = "probes/" + pr->spec.name + ".csv";
+    j["mean_file"] = "probes/" + pr->spec.name + "_mean.csv";
+    j["window_s"] = {t0_, t1_};
+    j["samples"] = pr->sums.empty() ? 0 : pr->sums.front().samples;
+    if (pr->spec.type == ProbeType::Point && pr->sums.front().samples > 0) {
+      const ProbeAverage m = mean_of(pr->sums.front());
+      j["mean_velocity_m_s"] = {m.velocity.x, m.velocity.y, m.velocity.z};
+      j["mean_pressure_Pa"] = m.pressure;
+      if (inflow_) j["velocity_reduction"] = 1 - m.velocity.x / *inflow_;
+    }
+    if (pr->spec.type != ProbeType::Point && inflow_) {
+      // The slowest point that lies well inside the fluid (coverage >= 0.9: not beside a
+      // body or a wall): how much the flow is slowed at most along the line or over the plane.
+      double slowest = std::numeric_limits<double>::infinity();
+      std::size_t where = 0;
+      for (std::size_t k = 0; k < pr->sums.size(); ++k) {
+        const ProbeAverage m = mean_of(pr->sums[k]);
+        if (m.samples == 0 || m.coverage < 0.9 || m.velocity.x >= slowest) continue;
+        slowest = m.velocity.x, where = k;
+      }
+      if (std::isfinite(slowest)) {
+        const Vec3d& x = pr->points[where];
+        j["largest_velocity_reduction"] = 1 - slowest / *inflow_;
+        j["largest_reduction_at_m"] = {x.x, x.y, x.z};
+      }
+    }
+    if (inflow_) j["reference_velocity_m_s"] = *inflow_;
+    out.push_back(j);
+  }
+  return out;
+}
+
+}  // namespace netsph
