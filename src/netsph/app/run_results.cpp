@@ -47,6 +47,12 @@ void log_run_results(const nlohmann::json& summary) {
       spdlog::info("probe {} over {}: mean velocity [{:.4g}, {:.4g}, {:.4g}] m/s{}", name,
                    window_text(p), u[0].get<double>(), u[1].get<double>(), u[2].get<double>(),
                    reduction);
+    } else if (p.contains("mean_velocity_reduction")) {
+      spdlog::info(
+          "probe {} over {}: mean streamwise velocity over the plane {:.4g} m/s, {:.1f}% "
+          "below the inflow",
+          name, window_text(p), p["mean_ux_m_s"].get<double>(),
+          100 * p["mean_velocity_reduction"].get<double>());
     } else if (p.contains("largest_velocity_reduction")) {
       const auto& x = p["largest_reduction_at_m"];
       spdlog::info(

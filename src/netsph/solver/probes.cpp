@@ -206,6 +206,35 @@ nlohmann::json ProbeRecorder::summary() const {
       }
     }
     if (inflow_) j["reference_velocity_m_s"] = *inflow_;
+    if (pr->spec.type == ProbeType::Plane) {
+      // The plane's mean streamwise velocity over its points in the fluid (coverage >= 0.9):
+      // behind a net, across its outline, the flow that reaches whatever lies downstream.
+      double sum = 0;
+      int n = 0;
+      for (const ProbeAverage& a : pr->sums) {
+        const ProbeAverage m = mean_of(a);
+        if (m.samples == 0 || m.coverage < 0.9) continue;
+        sum += m.velocity.x, ++n;
+      }
+      if (n > 0) {
+        j["mean_ux_m_s"] = sum / n;
+        if (inflow_) j["mean_velocity_reduction"] = 1 - sum / n / *inflow_;
+      }
+    }
+    if (pr->spec.type == ProbeType::Line) {
+      // The mean streamwise velocity along the line (null where no fluid was seen, or the
+      // point lay beside a body or a wall: coverage below 0.9), for the validation's reading
+      // of the paper's centreline figures.
+      nlohmann::json x = nlohmann::json::array(), ux = nlohmann::json::array();
+      for (std::size_t k = 0; k < pr->sums.size(); ++k) {
+        const ProbeAverage m = mean_of(pr->sums[k]);
+        x.push_back({pr->points[k].x, pr->points[k].y, pr->points[k].z});
+        ux.push_back(m.samples > 0 && m.coverage >= 0.9 ? nlohmann::json(m.velocity.x)
+                                                        : nlohmann::json(nullptr));
+      }
+      j["profile_points_m"] = x;
+      j["profile_mean_ux_m_s"] = ux;
+    }
     out.push_back(j);
   }
   return out;

@@ -45,7 +45,8 @@ class ProbeRecorder {
   void write_means() const;
   /// Per probe: type, points, files, samples averaged; point probes: the mean velocity; with a
   /// uniform inlet, the velocity reduction 1 - u_x / U (point probes) or the largest one along
-  /// the line or over the plane.
+  /// the line or over the plane; planes: the mean u_x over their points in the fluid (and its
+  /// reduction); lines: the mean u_x at every point.
   nlohmann::json summary() const;
 
   /// The window averages of probe `index` (case order), one per point.

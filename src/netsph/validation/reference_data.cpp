@@ -10,14 +10,14 @@ const std::vector<ElementDragReference>& table2_element_drag() {
   // Shi et al. 2024, Table 2 (SPH, dp = 0.005 m, domain 4 x 2 x 2 m, open inlet and outlet);
   // Cd = F / (0.5 rho U^2 A_projected), Re on each shape's characteristic size.
   static const std::vector<ElementDragReference> rows = {
-      {"cruciform", 0.41, 2.05e4, 1.03, 3.34},      {"cruciform", 0.60, 3.0e4, 0.98, 7.56},
-      {"cruciform", 0.80, 4.0e4, 0.97, 12.48},      {"cruciform", 1.01, 5.05e4, 0.94, 19.32},
-      {"sphere", 0.41, 5.79e4, 0.58, 0.76},         {"sphere", 0.60, 8.47e4, 0.55, 1.55},
-      {"sphere", 0.80, 1.12e5, 0.52, 2.60},         {"sphere", 1.01, 1.43e5, 0.51, 4.07},
-      {"circular_plate", 0.41, 8.96e4, 1.21, 3.81}, {"circular_plate", 0.60, 1.31e5, 1.15, 7.76},
+      {"cruciform", 0.41, 2.05e4, 1.03, 3.34},       {"cruciform", 0.60, 3.0e4, 0.98, 7.56},
+      {"cruciform", 0.80, 4.0e4, 0.97, 12.48},       {"cruciform", 1.01, 5.05e4, 0.94, 19.32},
+      {"sphere", 0.41, 5.79e4, 0.58, 0.76},          {"sphere", 0.60, 8.47e4, 0.55, 1.55},
+      {"sphere", 0.80, 1.12e5, 0.52, 2.60},          {"sphere", 1.01, 1.43e5, 0.51, 4.07},
+      {"circular_plate", 0.41, 8.96e4, 1.21, 3.81},  {"circular_plate", 0.60, 1.31e5, 1.15, 7.76},
       {"circular_plate", 0.80, 1.75e5, 1.13, 13.56}, {"circular_plate", 1.01, 2.21e5, 1.10, 21.04},
-      {"square_plate", 0.41, 7.94e4, 1.19, 3.75},   {"square_plate", 0.60, 1.16e5, 1.17, 7.90},
-      {"square_plate", 0.80, 1.55e5, 1.11, 13.32},  {"square_plate", 1.01, 1.96e5, 1.08, 20.85}};
+      {"square_plate", 0.41, 7.94e4, 1.19, 3.75},    {"square_plate", 0.60, 1.16e5, 1.17, 7.90},
+      {"square_plate", 0.80, 1.55e5, 1.11, 13.32},   {"square_plate", 1.01, 1.96e5, 1.08, 20.85}};
   return rows;
 }
 
