@@ -250,6 +250,12 @@ std::vector<ValidationRow> two_nets_reduced(const ValidationContext& ctx) {
     rows.push_back(row("two_nets_reduced", fmt::format("back / front net deflection, {} m/s", u),
                        "", back / front, {}, {},
                        "the paper: the back net deforms less (shielding), no figure"));
+    const double drag_front = group(s, "front").at("force_N").at(0).get<double>();
+    const double drag_back = group(s, "back").at("force_N").at(0).get<double>();
+    rows.push_back(row("two_nets_reduced", fmt::format("front net drag, {} m/s", u), "N",
+                       drag_front, {}, {}, note));
+    rows.push_back(row("two_nets_reduced", fmt::format("back / front net drag, {} m/s", u), "",
+                       drag_back / drag_front, {}, {}, "below 1: the front net shields the back"));
   }
   return rows;
 }
