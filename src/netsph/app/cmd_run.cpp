@@ -4,7 +4,9 @@
 #include <spdlog/spdlog.h>
 
 #include "netsph/app/commands.hpp"
+#include "netsph/core/error.hpp"
 #include "netsph/app/logging.hpp"
+#include "netsph/app/plots.hpp"
 #include "netsph/app/run_results.hpp"
 #include "netsph/app/scene_report.hpp"
 #include "netsph/net/standalone_net_run.hpp"
@@ -82,6 +84,7 @@ int run_command(const RunArgs& args) {
       r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
   spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
                r.snapshots, std::filesystem::absolute(out).string());
+  if (args.plots) make_plots(out);  // also after a failure: the plots show what went wrong
   if (r.status == "unstable") {
     spdlog::error("the simulation became unstable: {}", r.message);
     spdlog::error("the outputs written up to that point, and a final snapshot, are in {}",
@@ -93,6 +96,17 @@ int run_command(const RunArgs& args) {
     return 130;
   }
   return 0;
+}
+
+}  // namespace netsph::app
+
+namespace netsph::app {
+
+int plot_command(const std::string& run_dir) {
+  if (!std::filesystem::exists(std::filesystem::path(run_dir) / "summary.json")) {
+    throw Error(run_dir, "not a netsph run folder (no summary.json)");
+  }
+  return make_plots(run_dir) ? 0 : 1;
 }
 
 }  // namespace netsph::app

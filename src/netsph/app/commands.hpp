@@ -25,8 +25,12 @@ struct RunArgs {
   std::int64_t max_steps = 0;
   bool plain_progress = false;
   bool quiet = false;
+  bool plots = true;  ///< PNG plots at the end (when matplotlib is there)
 };
 int run_command(const RunArgs& args);
+
+/// `netsph plot DIR`: PNG plots of a run folder.
+int plot_command(const std::string& run_dir);
 
 struct CheckArgs {
   CaseChoice case_choice;

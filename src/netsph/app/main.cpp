@@ -61,6 +61,13 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--max-steps", run.max_steps, "stop after this many steps (0: no limit)");
   run_cmd->add_flag("--plain-progress", run.plain_progress,
                     "progress as periodic lines, not a bar");
+  bool no_plots = false;
+  run_cmd->add_flag("--no-plots", no_plots, "do not write PNG plots at the end");
+
+  std::string plot_dir;
+  auto* plot_cmd =
+      app.add_subcommand("plot", "write PNG plots of a run folder into DIR/plots (matplotlib)");
+  plot_cmd->add_option("DIR", plot_dir, "the run's output folder")->required();
 
   CheckArgs check;
   auto* check_cmd = app.add_subcommand(
@@ -111,12 +118,14 @@ int main(int argc, char** argv) {
   }
   log_to_console(quiet);
   run.quiet = quiet;
+  run.plots = !no_plots;
   try {
     if (*cases_cmd) {
       for (const auto& c : netsph::builtin_cases()) fmt::print("builtin:{}\n", c.name);
       return 0;
     }
     if (*check_cmd) return check_command(check);
+    if (*plot_cmd) return plot_command(plot_dir);
     if (*net_cmd) return net_command(net);
     if (*validate_cmd) {
       validate.quiet = quiet;
