@@ -1,5 +1,8 @@
 #include <omp.h>
 
+#include <fstream>
+#include <sstream>
+
 #include <spdlog/spdlog.h>
 
 #include "netsph/app/commands.hpp"
@@ -27,6 +30,18 @@ CaseSpec load_case(const CaseChoice& choice) {
     throw Error("builtin:" + name, "no such built-in case; built-in cases: " + names);
   }
   return read_case_string(builtin, "builtin:" + name, choice.overrides);
+}
+
+std::pair<std::string, std::string> case_text(const CaseChoice& choice) {
+  if (choice.path.empty() || choice.path.rfind("builtin:", 0) == 0) {
+    const std::string name =
+        choice.path.empty() ? std::string(kDefaultCase) : choice.path.substr(8);
+    return {std::string(builtin_case_text(name)), "builtin:" + name};
+  }
+  std::ifstream in(choice.path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return {text.str(), choice.path};
 }
 
 int apply_threads(int threads) {

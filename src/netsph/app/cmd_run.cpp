@@ -1,14 +1,17 @@
 #include <csignal>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "netsph/app/commands.hpp"
-#include "netsph/core/error.hpp"
 #include "netsph/app/logging.hpp"
 #include "netsph/app/plots.hpp"
 #include "netsph/app/run_results.hpp"
 #include "netsph/app/scene_report.hpp"
+#include "netsph/case/case_reader.hpp"
+#include "netsph/core/error.hpp"
+#include "netsph/io/checkpoint_file.hpp"
 #include "netsph/net/standalone_net_run.hpp"
 #include "netsph/solver/runner.hpp"
 
@@ -49,11 +52,59 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
   return 0;
 }
 
+namespace {
+
+std::string join_lines(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += s + "\n";
+  return out;
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) out.push_back(line);
+  return out;
+}
+
+/// The case of a restart: as its checkpoint recorded it, with the new --set overrides after
+/// the old ones (so that, e.g., simulation.end_time can be raised to run longer).
+CaseSpec restart_case(const CheckpointData& c, const std::vector<std::string>& more,
+                      std::vector<std::string>& overrides) {
+  overrides = split_lines(c.text_of("case.overrides"));
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  return read_case_string(c.text_of("case.toml"), c.text_of("case.source"), overrides);
+}
+
+}  // namespace
+
 int run_command(const RunArgs& args) {
-  const CaseSpec spec = load_case(args.case_choice);
+  const bool restart = !args.restart_dir.empty();
+  if (restart && !args.case_choice.path.empty()) {
+    throw Error("--restart",
+                "give either a case or --restart DIR: a restart reads its case from "
+                "the checkpoint (add --set to change a key, e.g. the end time)");
+  }
+  CheckpointData checkpoint, record;
+  std::vector<std::string> overrides = args.case_choice.overrides;
+  CaseSpec spec;
+  if (restart) {
+    checkpoint = read_checkpoint_file(checkpoint_path(args.restart_dir));
+    spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
+    record.text["case.toml"] = checkpoint.text_of("case.toml");
+    record.text["case.source"] = checkpoint.text_of("case.source");
+  } else {
+    spec = load_case(args.case_choice);
+    const auto [text, source] = case_text(args.case_choice);
+    record.text["case.toml"] = text;
+    record.text["case.source"] = source;
+  }
+  record.text["case.overrides"] = join_lines(overrides);
   const std::string backend = resolve_backend(args.backend);
   const int threads = apply_threads(args.threads);
-  const std::filesystem::path out = args.out_dir.empty()
+  const std::filesystem::path out = restart ? std::filesystem::path(args.restart_dir)
+                                    : args.out_dir.empty()
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);
   log_also_to_file(out / "log.txt");
@@ -65,6 +116,11 @@ int run_command(const RunArgs& args) {
                std::filesystem::absolute(out).string());
   Simulation sim(spec);
   log_scene(sim);
+  if (restart) {
+    sim.restore_state(checkpoint);
+    spdlog::info("restarting from {} at t = {:.6g} s (step {}), to end_time = {:.6g} s",
+                 checkpoint_path(out).string(), sim.time(), sim.steps(), spec.simulation.end_time);
+  }
 
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
@@ -73,6 +129,8 @@ int run_command(const RunArgs& args) {
   opt.progress = !args.quiet;
   opt.plain_progress = args.plain_progress;
   opt.max_steps = args.max_steps;
+  opt.case_record = std::move(record);
+  opt.resume = restart ? &checkpoint : nullptr;
   const RunReport r = run_simulation(sim, opt);
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
@@ -85,6 +143,10 @@ int run_command(const RunArgs& args) {
   spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
                r.snapshots, std::filesystem::absolute(out).string());
   if (args.plots) make_plots(out);  // also after a failure: the plots show what went wrong
+  if (r.checkpoint_time >= 0 && r.status != "completed") {
+    spdlog::info("continue with: netsph run --restart {} (checkpoint at t = {:.6g} s)",
+                 out.string(), r.checkpoint_time);
+  }
   if (r.status == "unstable") {
     spdlog::error("the simulation became unstable: {}", r.message);
     spdlog::error("the outputs written up to that point, and a final snapshot, are in {}",

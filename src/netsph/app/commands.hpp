@@ -3,6 +3,7 @@
 // netsph::Error and printed by main().
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "netsph/case/case_spec.hpp"
@@ -16,6 +17,8 @@ struct CaseChoice {
 };
 
 CaseSpec load_case(const CaseChoice& choice);
+/// The TOML text a choice reads (the file's content or the built-in case's), and its source.
+std::pair<std::string, std::string> case_text(const CaseChoice& choice);
 
 struct RunArgs {
   CaseChoice case_choice;
@@ -25,7 +28,8 @@ struct RunArgs {
   std::int64_t max_steps = 0;
   bool plain_progress = false;
   bool quiet = false;
-  bool plots = true;  ///< PNG plots at the end (when matplotlib is there)
+  bool plots = true;        ///< PNG plots at the end (when matplotlib is there)
+  std::string restart_dir;  ///< continue the run in this folder from its checkpoint
 };
 int run_command(const RunArgs& args);
 

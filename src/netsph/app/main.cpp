@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--max-steps", run.max_steps, "stop after this many steps (0: no limit)");
   run_cmd->add_flag("--plain-progress", run.plain_progress,
                     "progress as periodic lines, not a bar");
+  run_cmd->add_option("--restart", run.restart_dir,
+                      "continue the run in this output folder from its checkpoint.h5");
   bool no_plots = false;
   run_cmd->add_flag("--no-plots", no_plots, "do not write PNG plots at the end");
 

@@ -76,7 +76,8 @@ const std::vector<TableKeys>& schema() {
         "reference_velocity"}},
       {"probe", {"name", "type", "at", "start", "end", "points", "min", "max", "spacing", "every"}},
       {"current", {"velocity", "model", "screen", "normal_drag", "tangential_drag"}},
-      {"output", {"snapshots", "snapshot_every", "series_every", "force_window"}},
+      {"output",
+       {"snapshots", "snapshot_every", "series_every", "checkpoint_every", "force_window"}},
   };
   return tables;
 }
@@ -526,6 +527,8 @@ void CaseReader::read_output() {
                              format_number(spec_.simulation.end_time)));
   }
   o.series_every = r.number("series_every", NumberRule::non_negative("s"), o.series_every);
+  o.checkpoint_every =
+      r.number("checkpoint_every", NumberRule::non_negative("s"), o.checkpoint_every);
   read_force_window(r);
 }
 

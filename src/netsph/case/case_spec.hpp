@@ -247,9 +247,10 @@ struct ProbeSpec {
 
 /// [output]
 struct OutputSpec {
-  bool snapshots = true;      ///< write HDF5 + XDMF snapshots
-  double snapshot_every = 0;  ///< s; 0: end_time / 50
-  double series_every = 0;    ///< s; 0: snapshot_every / 10
+  bool snapshots = true;        ///< write HDF5 + XDMF snapshots
+  double snapshot_every = 0;    ///< s; 0: end_time / 50
+  double series_every = 0;      ///< s; 0: snapshot_every / 10
+  double checkpoint_every = 0;  ///< s of simulated time between checkpoints; 0: end_time / 10
   /// Time window over which summary.json averages body forces and Cd, s; default: the second
   /// half of the run (force_window = [t0, t1]).
   std::optional<std::array<double, 2>> force_window;

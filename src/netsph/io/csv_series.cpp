@@ -1,5 +1,8 @@
 #include "netsph/io/csv_series.hpp"
 
+#include <fstream>
+#include <utility>
+
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -71,6 +74,48 @@ CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns)
     fp_ = nullptr;
     throw Error(file_.string(), std::string("cannot write the CSV header: ") + std::strerror(err));
   }
+}
+
+CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns, double resume_time)
+    : file_(std::move(file)), columns_(std::move(columns)) {
+  std::ifstream in(file_);
+  if (!in) {
+    *this = CsvSeries(file_, columns_);  // nothing to resume: a new file
+    return;
+  }
+  std::string line, kept;
+  std::getline(in, line);
+  const std::string header = header_row(columns_);
+  if (line + "\n" != header) {
+    throw Error(file_.string(),
+                "cannot continue this CSV file: its columns differ from the "
+                "run's (was it written by another case?)");
+  }
+  kept = header;
+  // Times are printed with 9 significant digits, so a row written at the checkpoint's own
+  // time may read a little later than it: 1e-8 relative keeps it.
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const double t = std::strtod(line.c_str(), nullptr);
+    if (t <= resume_time * (1 + 1e-8)) kept += line + "\n";
+  }
+  in.close();
+  fp_ = std::fopen(file_.c_str(), "w");
+  if (fp_ == nullptr || std::fwrite(kept.data(), 1, kept.size(), fp_) != kept.size() ||
+      std::fflush(fp_) != 0) {
+    throw Error(file_.string(),
+                std::string("cannot rewrite the CSV file: ") + std::strerror(errno));
+  }
+}
+
+CsvSeries& CsvSeries::operator=(CsvSeries&& o) noexcept {
+  if (this != &o) {
+    if (fp_ != nullptr) std::fclose(fp_);
+    file_ = std::move(o.file_);
+    columns_ = std::move(o.columns_);
+    fp_ = std::exchange(o.fp_, nullptr);
+  }
+  return *this;
 }
 
 CsvSeries::~CsvSeries() {

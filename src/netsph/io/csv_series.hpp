@@ -18,9 +18,14 @@ class CsvSeries {
  public:
   /// Creates (truncates) the file and writes the header. Throws netsph::Error on failure.
   CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns);
+  /// A restarted run: keeps the existing file's rows whose first value (the time) is at most
+  /// `resume_time` (rows a run wrote after its last checkpoint are dropped) and appends after
+  /// them. The header must be the one `columns` makes; a missing file starts a new one.
+  CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns, double resume_time);
   ~CsvSeries();
   CsvSeries(const CsvSeries&) = delete;
   CsvSeries& operator=(const CsvSeries&) = delete;
+  CsvSeries& operator=(CsvSeries&& o) noexcept;
 
   /// One row; values.size() must equal the column count (netsph::Error otherwise).
   /// Integers are printed without a decimal point, others with 9 significant digits.

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <numeric>
+#include <sstream>
 #include <system_error>
 #include <type_traits>
 
@@ -211,7 +212,7 @@ void append_data_item(fmt::memory_buffer& out, const FieldSpec& f, std::size_t n
 
 }  // namespace
 
-SnapshotWriter::SnapshotWriter(std::filesystem::path dir, std::string base)
+SnapshotWriter::SnapshotWriter(std::filesystem::path dir, std::string base, bool resume)
     : dir_(std::move(dir)), base_(std::move(base)) {
   check_base_name(base_, dir_);
   const fs::path snapshots = dir_ / "snapshots";
@@ -220,6 +221,8 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path dir, std::string base)
   if (ec) throw Error(snapshots.string(), "cannot create the folder: " + ec.message());
   // A new run into the same folder replaces the previous run's snapshots: stale files with
   // higher numbers would otherwise sit next to the new ones and mislead anyone globbing them.
+  // (A restart keeps them: resume() sorts out which.)
+  if (resume) return;
   const std::string prefix = base_ + "_";
   for (const auto& entry : fs::directory_iterator(snapshots, ec)) {
     const std::string name = entry.path().filename().string();
@@ -227,6 +230,33 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path dir, std::string base)
       fs::remove(entry.path(), ec);
     }
   }
+}
+
+std::string SnapshotWriter::entries_text() const {
+  std::string out;
+  for (const Entry& e : entries_)
+    out += fmt::format("{} {:.17g} {} {}\n", e.h5_relative, e.time, e.step, e.n);
+  return out;
+}
+
+void SnapshotWriter::resume(const std::string& entries) {
+  // The constructor removed every snapshot file; a restart keeps the ones its checkpoint
+  // lists, so the constructor's sweep must not have run: see RunOutputs, which builds the
+  // writer with resume = true.
+  entries_.clear();
+  std::istringstream in(entries);
+  Entry e;
+  while (in >> e.h5_relative >> e.time >> e.step >> e.n) entries_.push_back(e);
+  std::error_code ec;
+  const std::string prefix = base_ + "_";
+  for (const auto& entry : fs::directory_iterator(dir_ / "snapshots", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file() || !name.starts_with(prefix) || !name.ends_with(".h5")) continue;
+    bool listed = false;
+    for (const Entry& k : entries_) listed = listed || fs::path(k.h5_relative).filename() == name;
+    if (!listed) fs::remove(entry.path(), ec);
+  }
+  rewrite_xdmf();
 }
 
 std::filesystem::path SnapshotWriter::xdmf_path() const {

@@ -30,12 +30,21 @@ struct SnapshotFields {
 class SnapshotWriter {
  public:
   /// Creates <dir>/snapshots/ if needed and removes <base>_*.h5 files a previous run left
-  /// there. `base` names the XDMF file and the snapshot files.
-  explicit SnapshotWriter(std::filesystem::path dir, std::string base = "particles");
+  /// there (unless `resume`: a restart then calls resume()). `base` names the XDMF file and
+  /// the snapshot files.
+  explicit SnapshotWriter(std::filesystem::path dir, std::string base = "particles",
+                          bool resume = false);
 
   /// Writes <dir>/snapshots/<base>_NNNNNN.h5 (NNNNNN = snapshot index from 0) and rewrites
   /// <dir>/<base>.xdmf. Returns the path of the .h5 file. Throws netsph::Error on I/O failure.
   std::filesystem::path write(const SnapshotFields& fields);
+
+  /// A restarted run: takes over the snapshots its checkpoint lists (one line each,
+  /// "<relative .h5 path> <time> <step> <count>", as entries_text() gives them), keeps their
+  /// files, removes later ones, and rewrites the XDMF file.
+  void resume(const std::string& entries);
+  /// The snapshots written so far, for a checkpoint.
+  std::string entries_text() const;
 
   int count() const { return static_cast<int>(entries_.size()); }
   std::filesystem::path xdmf_path() const;

@@ -44,6 +44,15 @@ void write_net_vtk(const std::filesystem::path& file, const NetModel& net,
 
 void NetVtkSeries::add(const std::string& name, double time) {
   entries_.emplace_back(name, time);
+  rewrite();
+}
+
+void NetVtkSeries::reset(std::vector<std::pair<std::string, double>> entries) {
+  entries_ = std::move(entries);
+  rewrite();
+}
+
+void NetVtkSeries::rewrite() const {
   nlohmann::json j;
   j["file-series-version"] = "1.0";
   j["files"] = nlohmann::json::array();

@@ -21,9 +21,12 @@ class NetVtkSeries {
  public:
   explicit NetVtkSeries(std::filesystem::path series_file) : file_(std::move(series_file)) {}
   void add(const std::string& name, double time);
+  /// A restarted run: the entries up to its checkpoint, written out again.
+  void reset(std::vector<std::pair<std::string, double>> entries);
 
  private:
   std::filesystem::path file_;
+  void rewrite() const;
   std::vector<std::pair<std::string, double>> entries_;
 };
 

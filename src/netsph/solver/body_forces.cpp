@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include "netsph/core/error.hpp"
+
 namespace netsph {
 
 std::vector<ForceGroup> force_groups(const Simulation& sim) {
@@ -20,8 +22,14 @@ std::vector<ForceGroup> force_groups(const Simulation& sim) {
       g.reference_area = spec.reference_area;
     }
   }
+  // The bodies' centres as the case places them (not where they are now: a restarted run
+  // must measure moments about the same point as the run it continues).
   for (auto& g : groups) {
-    for (std::size_t b : g.bodies) g.reference_point += bodies[b].state.com;
+    for (std::size_t b : g.bodies) {
+      Vec3d c = sim.spec().bodies[b].center;
+      if (sim.model().dims == 2) c.y = 0;
+      g.reference_point += c;
+    }
     g.reference_point = g.reference_point / static_cast<double>(g.bodies.size());
   }
   return groups;
@@ -99,6 +107,28 @@ nlohmann::json BodyForceRecorder::summary() const {
     out.push_back(j);
   }
   return out;
+}
+
+std::vector<double> BodyForceRecorder::state() const {
+  std::vector<double> s;
+  for (const GroupLoad& l : sums_) {
+    for (int a = 0; a < 3; ++a) s.push_back(l.force[a]);
+    for (int a = 0; a < 3; ++a) s.push_back(l.moment[a]);
+    s.push_back(l.cd);
+  }
+  s.push_back(weight_);
+  return s;
+}
+
+void BodyForceRecorder::restore(const std::vector<double>& s) {
+  if (s.size() != 7 * sums_.size() + 1) throw Error("checkpoint", "force groups differ");
+  for (std::size_t k = 0; k < sums_.size(); ++k) {
+    const double* v = s.data() + 7 * k;
+    sums_[k].force = {v[0], v[1], v[2]};
+    sums_[k].moment = {v[3], v[4], v[5]};
+    sums_[k].cd = v[6];
+  }
+  weight_ = s.back();
 }
 
 std::vector<CsvColumn> body_state_columns() {

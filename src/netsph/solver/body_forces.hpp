@@ -47,6 +47,9 @@ class BodyForceRecorder {
   void accumulate(const Simulation& sim);
   /// Window averages per group, for summary.json.
   nlohmann::json summary() const;
+  /// The running sums, for a checkpoint and a restart.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& state);
 
  private:
   std::vector<ForceGroup> groups_;

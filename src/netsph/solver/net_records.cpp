@@ -1,5 +1,6 @@
 #include "netsph/solver/net_records.hpp"
 
+#include "netsph/core/error.hpp"
 #include "netsph/net/net_output.hpp"
 
 namespace netsph {
@@ -19,6 +20,21 @@ void NetRecorder::accumulate(const Simulation& sim) {
     tension_[n] += max_twine_tension(net.model) * dt;
   }
   weight_ += dt;
+}
+
+std::vector<double> NetRecorder::state() const {
+  std::vector<double> s = deflection_;
+  s.insert(s.end(), tension_.begin(), tension_.end());
+  s.push_back(weight_);
+  return s;
+}
+
+void NetRecorder::restore(const std::vector<double>& s) {
+  const std::size_t n = deflection_.size();
+  if (s.size() != 2 * n + 1) throw Error("checkpoint", "the nets differ");
+  deflection_.assign(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(n));
+  tension_.assign(s.begin() + static_cast<std::ptrdiff_t>(n), s.end() - 1);
+  weight_ = s.back();
 }
 
 nlohmann::json NetRecorder::summary(const Simulation& sim) const {

@@ -19,6 +19,9 @@ class NetRecorder {
   void accumulate(const Simulation& sim);
   /// One object per coupled net (an empty array without nets).
   nlohmann::json summary(const Simulation& sim) const;
+  /// The running sums, for a checkpoint and a restart.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& state);
 
  private:
   double t0_, t1_;

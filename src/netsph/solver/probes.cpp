@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "netsph/backend/cpu/probe_pass.hpp"
+#include "netsph/core/error.hpp"
 #include "netsph/solver/run_outputs.hpp"
 
 namespace netsph {
@@ -40,7 +41,8 @@ const char* type_name(ProbeType t) {
 }  // namespace
 
 ProbeRecorder::ProbeRecorder(const Simulation& sim, const std::filesystem::path& dir,
-                             double window_start, double window_end)
+                             double window_start, double window_end,
+                             std::optional<double> resume_time)
     : dir_(dir / "probes"),
       t0_(window_start),
       t1_(window_end),
@@ -59,7 +61,9 @@ ProbeRecorder::ProbeRecorder(const Simulation& sim, const std::filesystem::path&
                              : (ps.type == ProbeType::Point ? series_interval(spec)
                                                             : snapshot_interval(spec));
     pr->next_write = sim.time();
-    pr->csv = std::make_unique<CsvSeries>(dir_ / (ps.name + ".csv"), probe_columns());
+    pr->csv = resume_time ? std::make_unique<CsvSeries>(dir_ / (ps.name + ".csv"), probe_columns(),
+                                                        *resume_time)
+                          : std::make_unique<CsvSeries>(dir_ / (ps.name + ".csv"), probe_columns());
     probes_.push_back(std::move(pr));
   }
   next_sample_ = sim.time();
@@ -117,6 +121,34 @@ void ProbeRecorder::after_step(const Simulation& sim) {
 
 const std::vector<Vec3d>& ProbeRecorder::points(std::size_t index) const {
   return probes_.at(index)->points;
+}
+
+std::vector<double> ProbeRecorder::state() const {
+  std::vector<double> s{next_sample_};
+  for (const auto& pr : probes_) {
+    s.push_back(pr->next_write);
+    for (const ProbeAverage& a : pr->sums) {
+      s.insert(s.end(), {a.velocity.x, a.velocity.y, a.velocity.z, a.pressure, a.coverage,
+                         static_cast<double>(a.samples)});
+    }
+  }
+  return s;
+}
+
+void ProbeRecorder::restore(const std::vector<double>& s) {
+  std::size_t need = 1;
+  for (const auto& pr : probes_) need += 1 + 6 * pr->sums.size();
+  if (s.size() != need) throw Error("checkpoint", "the probes differ");
+  std::size_t i = 0;
+  next_sample_ = s[i++];
+  for (auto& pr : probes_) {
+    pr->next_write = s[i++];
+    for (ProbeAverage& a : pr->sums) {
+      a.velocity = {s[i], s[i + 1], s[i + 2]};
+      a.pressure = s[i + 3], a.coverage = s[i + 4], a.samples = static_cast<int>(s[i + 5]);
+      i += 6;
+    }
+  }
 }
 
 const std::vector<ProbeAverage>& ProbeRecorder::averages(std::size_t index) const {

@@ -33,9 +33,10 @@ struct ProbeAverage {
 
 class ProbeRecorder {
  public:
-  /// Creates probes/<name>.csv for every probe of the case (nothing without probes).
+  /// Creates probes/<name>.csv for every probe of the case (nothing without probes); a
+  /// restart (resume_time set) continues the files instead.
   ProbeRecorder(const Simulation& sim, const std::filesystem::path& dir, double window_start,
-                double window_end);
+                double window_end, std::optional<double> resume_time = {});
   ~ProbeRecorder();
 
   bool empty() const { return probes_.empty(); }
@@ -52,6 +53,10 @@ class ProbeRecorder {
   /// The window averages of probe `index` (case order), one per point.
   const std::vector<ProbeAverage>& averages(std::size_t index) const;
   const std::vector<Vec3d>& points(std::size_t index) const;
+
+  /// The running sums and next sampling times, for a checkpoint and a restart.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& state);
 
  private:
   struct Probe;

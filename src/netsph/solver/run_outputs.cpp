@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <sstream>
+
+#include "netsph/core/error.hpp"
 
 namespace netsph {
 
@@ -85,24 +89,78 @@ std::vector<CsvColumn> with_force_columns(std::vector<CsvColumn> cols,
 }
 }  // namespace
 
-RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots)
+namespace {
+std::optional<double> resume_time(const CheckpointData* c) {
+  if (!c) return {};
+  return c->real("sim.time");
+}
+}  // namespace
+
+RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots,
+                       const CheckpointData* resume)
     : dir_(std::move(dir)),
       forces_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
       nets_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
       probes_((std::filesystem::create_directories(dir_), sim), dir_, force_window(sim.spec())[0],
-              force_window(sim.spec())[1]),
-      series_((std::filesystem::create_directories(dir_), dir_ / "series.csv"),
-              with_force_columns(series_columns(sim.model().dims), forces_, sim)) {
+              force_window(sim.spec())[1], resume_time(resume)),
+      series_(resume
+                  ? CsvSeries(dir_ / "series.csv",
+                              with_force_columns(series_columns(sim.model().dims), forces_, sim),
+                              *resume_time(resume))
+                  : CsvSeries(dir_ / "series.csv",
+                              with_force_columns(series_columns(sim.model().dims), forces_, sim))) {
   for (const CoupledNet& net : sim.nets())
     net_vtk_.emplace_back(dir_ / (net.model.name + ".vtk.series"));
-  if (snapshots) snapshots_ = std::make_unique<SnapshotWriter>(dir_, "particles");
+  if (snapshots)
+    snapshots_ = std::make_unique<SnapshotWriter>(dir_, "particles", resume != nullptr);
   if (!sim.bodies().empty()) {
-    bodies_csv_ = std::make_unique<CsvSeries>(dir_ / "bodies.csv", body_state_columns());
+    bodies_csv_ = resume ? std::make_unique<CsvSeries>(dir_ / "bodies.csv", body_state_columns(),
+                                                       *resume_time(resume))
+                         : std::make_unique<CsvSeries>(dir_ / "bodies.csv", body_state_columns());
   }
   snapshot_every_ = snapshot_interval(sim.spec());
   series_every_ = series_interval(sim.spec());
   next_snapshot_ = sim.time();
   next_series_ = sim.time();
+  if (resume) restore_state(sim, *resume);
+}
+
+void RunOutputs::save_state(CheckpointData& c) const {
+  c.f64["outputs.next"] = {next_snapshot_, next_series_, static_cast<double>(last_snapshot_step_),
+                           static_cast<double>(last_series_step_)};
+  c.text["outputs.snapshots"] = snapshots_ ? snapshots_->entries_text() : "";
+  c.f64["outputs.forces"] = forces_.state();
+  c.f64["outputs.nets"] = nets_.state();
+  c.f64["outputs.probes"] = probes_.state();
+}
+
+void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
+  const std::vector<double>& next = c.reals("outputs.next");
+  if (next.size() != 4) throw Error(c.source, "output state of another netsph version");
+  next_snapshot_ = next[0], next_series_ = next[1];
+  last_snapshot_step_ = static_cast<std::int64_t>(next[2]);
+  last_series_step_ = static_cast<std::int64_t>(next[3]);
+  forces_.restore(c.reals("outputs.forces"));
+  nets_.restore(c.reals("outputs.nets"));
+  probes_.restore(c.reals("outputs.probes"));
+  if (!snapshots_) return;
+  const std::string& entries = c.text_of("outputs.snapshots");
+  snapshots_->resume(entries);
+  // The nets' VTK files go with the particle snapshots: net_<net>_<snapshot index>.vtk.
+  std::vector<double> times;
+  std::istringstream in(entries);
+  std::string file;
+  double t;
+  std::int64_t step;
+  std::size_t n;
+  while (in >> file >> t >> step >> n) times.push_back(t);
+  for (std::size_t k = 0; k < sim.nets().size(); ++k) {
+    std::vector<std::pair<std::string, double>> list;
+    for (std::size_t i = 0; i < times.size(); ++i)
+      list.emplace_back("net_" + sim.nets()[k].model.name + "_" + std::to_string(i) + ".vtk",
+                        times[i]);
+    net_vtk_[k].reset(std::move(list));
+  }
 }
 
 void RunOutputs::write_snapshot(const Simulation& sim) {

@@ -34,7 +34,10 @@ GlobalMeasures measure(const Simulation& sim);
 
 class RunOutputs {
  public:
-  RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots);
+  /// `resume`: a checkpoint to continue from (restart), or null for a new run. A restart keeps
+  /// the outputs written up to the checkpoint and drops what the run wrote after it.
+  RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots,
+             const CheckpointData* resume = nullptr);
 
   /// Writes a snapshot and/or a series row when their interval has come (always at t = 0).
   void maybe_write(const Simulation& sim, double wall_s);
@@ -54,6 +57,9 @@ class RunOutputs {
   nlohmann::json probe_summary() const { return probes_.summary(); }
   const ProbeRecorder& probes() const { return probes_; }
 
+  /// The outputs' state (intervals, snapshot list, running averages), for a checkpoint.
+  void save_state(CheckpointData& c) const;
+
   int snapshots_written() const { return snapshots_ ? snapshots_->count() : 0; }
   const std::filesystem::path& dir() const { return dir_; }
 
@@ -61,6 +67,7 @@ class RunOutputs {
   void write_snapshot(const Simulation& sim);
   void write_net_files(const Simulation& sim, bool final);
   void write_series_row(const Simulation& sim, double wall_s);
+  void restore_state(const Simulation& sim, const CheckpointData& c);
 
   std::filesystem::path dir_;
   std::unique_ptr<SnapshotWriter> snapshots_;

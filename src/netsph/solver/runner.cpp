@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "netsph/io/atomic_file.hpp"
+#include "netsph/io/checkpoint_file.hpp"
 #include "netsph/io/progress.hpp"
 #include "netsph/solver/run_outputs.hpp"
 
@@ -102,7 +103,20 @@ bool stop_requested() {
 RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   const CaseSpec& spec = sim.spec();
   const double end = spec.simulation.end_time;
-  RunOutputs outputs(sim, opt.out_dir, spec.output.snapshots);
+  RunOutputs outputs(sim, opt.out_dir, spec.output.snapshots, opt.resume);
+  // Checkpoints every checkpoint_every seconds of simulated time (default: a tenth of the
+  // run) and at the end, so that a run that dies loses at most that much.
+  const double checkpoint_every =
+      spec.output.checkpoint_every > 0 ? spec.output.checkpoint_every : end / 10;
+  double next_checkpoint = sim.time() + checkpoint_every;
+  double checkpoint_time = -1;
+  const auto write_checkpoint = [&] {
+    CheckpointData c = opt.case_record;
+    sim.save_state(c);
+    outputs.save_state(c);
+    write_checkpoint_file(checkpoint_path(opt.out_dir), c);
+    checkpoint_time = sim.time();
+  };
   ProgressReporter progress(end, stderr, opt.plain_progress);
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -112,7 +126,7 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   RunReport r;
   double particle_steps = 0;
   bool warned_lost = false;
-  outputs.maybe_write(sim, 0.0);
+  if (!opt.resume) outputs.maybe_write(sim, 0.0);
   try {
     while (sim.time() < end * (1 - 1e-12)) {
       if (opt.max_steps > 0 && sim.steps() >= opt.max_steps) {
@@ -136,6 +150,10 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
         warned_lost = true;
       }
       outputs.maybe_write(sim, wall());
+      if (sim.time() >= next_checkpoint * (1 - 1e-12) && sim.time() < end * (1 - 1e-12)) {
+        write_checkpoint();
+        while (next_checkpoint <= sim.time() * (1 + 1e-12)) next_checkpoint += checkpoint_every;
+      }
       if (opt.progress) progress.update(sim.time(), sim.steps(), sim.particles().size());
     }
     if (r.status.empty()) r.status = "completed";
@@ -153,9 +171,12 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   r.warnings = collect_warnings(sim);
   try {
     outputs.write_final(sim, r.wall_s);
+    // The state of an unstable run is broken: its last good checkpoint stays.
+    if (r.status != "unstable") write_checkpoint();
   } catch (const Error& e) {
     r.warnings.push_back(std::string("final output failed: ") + e.what());
   }
+  r.checkpoint_time = checkpoint_time;
   r.snapshots = outputs.snapshots_written();
   r.summary = summary_json(sim, r, opt, outputs);
   write_file_atomic(opt.out_dir / "summary.json", r.summary.dump(2) + "\n");

@@ -19,7 +19,18 @@ struct RunOptions {
   bool progress = true;         ///< show progress on stderr
   bool plain_progress = false;  ///< periodic lines even on a terminal
   std::int64_t max_steps = 0;   ///< stop after this many steps (0: run to end_time)
+  /// Goes into every checkpoint with the simulation's state: the case as run (texts
+  /// "case.toml", "case.source", "case.overrides"), so that `netsph run --restart DIR` needs
+  /// nothing else.
+  CheckpointData case_record;
+  /// A checkpoint the simulation was restored from: the outputs continue it.
+  const CheckpointData* resume = nullptr;
 };
+
+/// The checkpoint file of a run folder.
+inline std::filesystem::path checkpoint_path(const std::filesystem::path& run_dir) {
+  return run_dir / "checkpoint.h5";
+}
 
 struct RunReport {
   std::string status;   ///< "completed", "unstable", "interrupted", "step limit"
@@ -31,7 +42,8 @@ struct RunReport {
   double bytes_per_particle = 0;
   int snapshots = 0;
   std::vector<std::string> warnings;
-  nlohmann::json summary;  ///< what summary.json holds
+  nlohmann::json summary;       ///< what summary.json holds
+  double checkpoint_time = -1;  ///< simulated time of the last checkpoint written, s (-1: none)
   bool ok() const { return status == "completed" || status == "step limit"; }
 };
 

@@ -24,6 +24,7 @@
 #include "netsph/backend/cpu/rates.hpp"
 #include "netsph/case/case_spec.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/io/checkpoint_file.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
 #include "netsph/solver/net_coupling.hpp"
 #include "netsph/solver/scene.hpp"
@@ -76,6 +77,12 @@ class Simulation {
   std::vector<float> pressures() const;
   /// Bytes held per particle by all per-particle arrays and the grid.
   double bytes_per_particle() const;
+
+  /// Adds the state a restart needs to `c` (solver/simulation_checkpoint.cpp).
+  void save_state(CheckpointData& c) const;
+  /// Replaces the state with a checkpoint's, written by save_state for the same case; the
+  /// steps that follow are then bit for bit those the saved run would have taken.
+  void restore_state(const CheckpointData& c);
 
  private:
   void sort_particles(bool mid_step);

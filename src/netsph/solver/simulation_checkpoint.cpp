@@ -1,0 +1,137 @@
+// Simulation::save_state / restore_state: everything a step reads that is not rebuilt from the
+// case, so that a run restarted from a checkpoint continues bit for bit (same threads, same
+// build): the particles in their sorted order, time, step count, dt floor, diagnostics, the
+// rigid bodies' states (and last forces, for the outputs) and the nets' knots. The scene
+// (walls, zones, body shapes), the grid and every scratch array come from the case again.
+#include <fmt/format.h>
+
+#include "netsph/solver/simulation.hpp"
+
+namespace netsph {
+namespace {
+
+template <class V, class T>
+void put3(std::vector<T>& out, const V& v) {
+  out.push_back(v.x), out.push_back(v.y), out.push_back(v.z);
+}
+
+}  // namespace
+
+void Simulation::save_state(CheckpointData& c) const {
+  const std::size_t n = p_.size();
+  auto& pos = c.f64["particles.pos"];
+  auto& vel = c.f32["particles.vel"];
+  auto& ghost = c.f32["particles.ghost"];
+  pos.reserve(3 * n), vel.reserve(3 * n), ghost.reserve(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    put3(pos, p_.pos[i]), put3(vel, p_.vel[i]), put3(ghost, p_.ghost[i]);
+  c.f32["particles.rho"] = std::vector<float>(p_.rho.begin(), p_.rho.end());
+  auto& kind = c.u8["particles.kind"];
+  for (const ParticleKind k : p_.kind) kind.push_back(static_cast<std::uint8_t>(k));
+  c.u32["particles.id"] = p_.id;
+  c.u32["particles.group"] = p_.group;
+  c.u32["particles.next_id"] = {p_.next_id};
+
+  c.f64["sim.time"] = {time_};
+  c.f64["sim.steps"] = {static_cast<double>(steps_)};
+  c.f64["sim.dt_floor"] = {dt_floor_};
+  const StepDiagnostics& d = diag_;
+  c.f64["diag"] = {d.dt_limits.force,
+                   d.dt_limits.acoustic,
+                   d.dt_limits.viscous,
+                   d.dt_limits.dt,
+                   d.max_speed,
+                   static_cast<double>(d.lost_total),
+                   static_cast<double>(d.resorts),
+                   static_cast<double>(d.open.entered_fluid),
+                   static_cast<double>(d.open.created),
+                   static_cast<double>(d.open.removed),
+                   static_cast<double>(d.open.absorbed),
+                   static_cast<double>(d.mdbc_fallbacks)};
+
+  auto& bodies = c.f64["bodies"];
+  for (const RigidBody& b : scene_.bodies) {
+    put3(bodies, b.state.com);
+    bodies.push_back(b.state.q.w), bodies.push_back(b.state.q.x);
+    bodies.push_back(b.state.q.y), bodies.push_back(b.state.q.z);
+    put3(bodies, b.state.vel), put3(bodies, b.state.omega);
+    put3(bodies, b.fluid_force), put3(bodies, b.fluid_torque);
+    put3(bodies, b.contact_force), put3(bodies, b.contact_torque);
+  }
+  auto& knots = c.f64["nets.knots"];
+  for (const CoupledNet& net : nets_)
+    for (const NetKnot& k : net.model.knots) put3(knots, k.position), put3(knots, k.velocity);
+}
+
+void Simulation::restore_state(const CheckpointData& c) {
+  const auto fail = [&](const std::string& what) {
+    throw Error(c.source, what + ": the checkpoint was written for another case");
+  };
+  const std::vector<double>& pos = c.reals("particles.pos");
+  const std::size_t n = pos.size() / 3;
+  const auto& vel = c.f32.at("particles.vel");
+  const auto& ghost = c.f32.at("particles.ghost");
+  const auto& rho = c.f32.at("particles.rho");
+  const auto& kind = c.u8.at("particles.kind");
+  const auto& id = c.u32.at("particles.id");
+  const auto& group = c.u32.at("particles.group");
+  if (vel.size() != 3 * n || ghost.size() != 3 * n || rho.size() != n || kind.size() != n ||
+      id.size() != n || group.size() != n) {
+    fail("particle arrays of different lengths");
+  }
+  const std::vector<double>& bodies = c.reals("bodies");
+  constexpr std::size_t kPerBody = 25;
+  if (bodies.size() != kPerBody * scene_.bodies.size())
+    fail(fmt::format("{} bodies in the checkpoint, {} in the case", bodies.size() / kPerBody,
+                     scene_.bodies.size()));
+  const std::vector<double>& knots = c.reals("nets.knots");
+  std::size_t knot_count = 0;
+  for (const CoupledNet& net : nets_) knot_count += net.model.knots.size();
+  if (knots.size() != 6 * knot_count) fail("the nets' knots differ");
+
+  p_.pos.resize(n), p_.vel.resize(n), p_.ghost.resize(n), p_.rho.assign(rho.begin(), rho.end());
+  p_.kind.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p_.pos[i] = {pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]};
+    p_.vel[i] = {vel[3 * i], vel[3 * i + 1], vel[3 * i + 2]};
+    p_.ghost[i] = {ghost[3 * i], ghost[3 * i + 1], ghost[3 * i + 2]};
+    p_.kind[i] = static_cast<ParticleKind>(kind[i]);
+  }
+  p_.id = id;
+  p_.group = group;
+  p_.next_id = c.u32.at("particles.next_id").at(0);
+
+  time_ = c.real("sim.time");
+  steps_ = static_cast<std::int64_t>(c.real("sim.steps"));
+  dt_floor_ = c.real("sim.dt_floor");
+  const std::vector<double>& d = c.reals("diag");
+  if (d.size() != 12) fail("diagnostics of another version");
+  diag_.dt_limits = {d[0], d[1], d[2], d[3]};
+  diag_.max_speed = d[4];
+  diag_.lost_total = static_cast<std::size_t>(d[5]);
+  diag_.resorts = static_cast<int>(d[6]);
+  diag_.open = {static_cast<std::size_t>(d[7]), static_cast<std::size_t>(d[8]),
+                static_cast<std::size_t>(d[9]), static_cast<std::size_t>(d[10])};
+  diag_.mdbc_fallbacks = static_cast<std::size_t>(d[11]);
+
+  const auto vec = [](const double* v) { return Vec3d{v[0], v[1], v[2]}; };
+  for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+    const double* v = bodies.data() + kPerBody * b;
+    RigidBody& body = scene_.bodies[b];
+    body.state.com = vec(v);
+    body.state.q = {v[3], v[4], v[5], v[6]};
+    body.state.vel = vec(v + 7), body.state.omega = vec(v + 10);
+    body.fluid_force = vec(v + 13), body.fluid_torque = vec(v + 16);
+    body.contact_force = vec(v + 19), body.contact_torque = vec(v + 22);
+    body.start = body.state;
+  }
+  std::size_t k = 0;
+  for (CoupledNet& net : nets_) {
+    for (NetKnot& knot : net.model.knots) {
+      knot.position = vec(knots.data() + 6 * k), knot.velocity = vec(knots.data() + 6 * k + 3);
+      ++k;
+    }
+  }
+}
+
+}  // namespace netsph
