@@ -25,7 +25,8 @@ namespace case_detail {
 const std::vector<TableKeys>& schema() {
   static const std::vector<TableKeys> tables = {
       {"simulation",
-       {"name", "dimensions", "dp", "h_over_dp", "kernel", "end_time", "cfl", "dt_min", "dt_max"}},
+       {"name", "dimensions", "dp", "h_over_dp", "kernel", "end_time", "cfl", "dt_min", "dt_max",
+        "max_lost_fraction"}},
       {"fluid",
        {"density", "sound_speed", "sound_speed_coef", "gamma", "background_pressure", "gravity",
         "structure_gravity", "viscosity", "density_diffusion", "shifting"}},
@@ -256,6 +257,8 @@ void CaseReader::read_simulation(const std::string& default_name) {
   s.cfl = r.number("cfl", NumberRule::left_open(0, 1, ""), s.cfl);
   s.dt_min = r.number("dt_min", NumberRule::non_negative("s"), s.dt_min);
   s.dt_max = r.number("dt_max", NumberRule::non_negative("s"), s.dt_max);
+  s.max_lost_fraction =
+      r.number("max_lost_fraction", NumberRule::closed(0, 1, ""), s.max_lost_fraction);
   if (s.dt_min > 0 && s.dt_max > 0 && s.dt_max <= s.dt_min) {
     r.fail_value("dt_max", *r.find("dt_max"),
                  fmt::format("must be > simulation.dt_min ({} s) when both are set",

@@ -32,6 +32,10 @@ struct SimulationSpec {
   double cfl = 0.2;     ///< Courant number for the variable dt; (0, 1]
   double dt_min = 0;    ///< s; a dt below it stops the run as unstable. 0: 1e-4 x initial dt
   double dt_max = 0;    ///< s; 0: no cap
+  /// The run stops as unstable once this fraction of the initial fluid particles has left the
+  /// domain (other than through an outlet), or when more than a hundredth of the fluid leaves
+  /// in a single step; [0, 1], 1: never on the total.
+  double max_lost_fraction = 0.05;
 };
 
 /// [fluid]

@@ -35,6 +35,7 @@ Simulation::Simulation(const CaseSpec& spec)
   shift_params_.dims = static_cast<Real>(m.dims);
   shift_params_.max_component = static_cast<Real>(0.1 * spec.simulation.dp);
   contact_model_ = ContactModel::make(spec.simulation.dp, scene_.sound_speed);
+  initial_fluid_ = p_.count(ParticleKind::Fluid);
   // Knots carry their weight and buoyancy in the knot-spring solver (constant forces), not as
   // body forces.
   for (const CoupledNet& net : nets_) {
@@ -155,6 +156,17 @@ void Simulation::sort_particles(bool mid_step) {
     grid_.wrap(p_.pos);
   }
   grid_.sort(p_.pos, order_);
+  if (order_.size() < before) {
+    // Dropped: outlet removals (NaN positions) and particles outside the domain (lost). Keep
+    // the last few lost ones for the report of a run stopped for losing fluid.
+    kept_.assign(before, 0);
+    for (const std::uint32_t i : order_) kept_[i] = 1;
+    for (std::size_t i = 0; i < before; ++i) {
+      if (kept_[i] || !std::isfinite(p_.pos[i].x)) continue;
+      if (diag_.last_lost.size() == 5) diag_.last_lost.erase(diag_.last_lost.begin());
+      diag_.last_lost.push_back({p_.id[i], p_.pos[i], p_.vel[i]});
+    }
+  }
   gather_into(p_.kind, order_, scratch_kind_);
   gather_into(p_.id, order_, scratch_u32_);
   gather_into(p_.group, order_, scratch_u32_);
@@ -190,9 +202,9 @@ double Simulation::compute_dt(const RateReductions& r) {
         fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.3g} s is below "
                     "the floor {:.3g} s (force limit {:.3g} s, acoustic-viscous limit "
                     "{:.3g} s); particles are colliding or the flow is too fast for c0 = "
-                    "{:.4g} m/s",
+                    "{:.4g} m/s; the strongest acceleration: {}",
                     time_, steps_, dt, dt_floor_, diag_.dt_limits.force, diag_.dt_limits.acoustic,
-                    scene_.sound_speed));
+                    scene_.sound_speed, fastest_accelerating()));
   }
   diag_.dt_limits.dt = dt;
   return dt;
@@ -308,8 +320,10 @@ void Simulation::step() {
   diag_.open.created += ob.created;
   diag_.open.removed += ob.removed;
   diag_.open.absorbed += ob.absorbed;
+  const std::size_t lost_before = diag_.lost_total;
   sort_particles(false);
   diag_.lost_total -= ob.removed;  // left through an outlet: not lost
+  check_lost(diag_.lost_total - lost_before);
 
   update_wall_kinematics(0.0);  // velocities at t for the boundary state
   place_body_particles(false);
@@ -352,6 +366,47 @@ void Simulation::step() {
   for (std::size_t i = 0; i < p_.size(); ++i)
     if (is_fluid(p_.kind[i])) vmax2 = std::max(vmax2, static_cast<double>(norm2(p_.vel[i])));
   diag_.max_speed = std::sqrt(vmax2);
+}
+
+void Simulation::check_lost(std::size_t lost_this_step) const {
+  if (diag_.lost_total == 0) return;
+  const double fluid = static_cast<double>(std::max<std::size_t>(initial_fluid_, 1));
+  const bool burst = lost_this_step > std::max(10.0, 0.01 * fluid);
+  const bool total =
+      static_cast<double>(diag_.lost_total) > spec_.simulation.max_lost_fraction * fluid;
+  if (!burst && !total) return;
+  std::string where;
+  for (const auto& l : diag_.last_lost) {
+    where += fmt::format(
+        "{}id {} at ({:.4g}, {:.4g}, {:.4g}) m moving ({:.3g}, {:.3g}, {:.3g}) m/s",
+        where.empty() ? ": " : "; ", l.id, l.pos.x, l.pos.y, l.pos.z, l.vel.x, l.vel.y, l.vel.z);
+  }
+  throw SimulationUnstable(
+      "solver",
+      fmt::format("fluid is leaving the domain at t = {:.6g} s (step {}): {} particles in this "
+                  "step, {} in all ({:.2g}% of the initial fluid; the limit is {} in one step or "
+                  "simulation.max_lost_fraction = {} in all); the last to leave{}",
+                  time_, steps_, lost_this_step, diag_.lost_total,
+                  100 * static_cast<double>(diag_.lost_total) / fluid,
+                  static_cast<std::size_t>(std::max(10.0, 0.01 * fluid)),
+                  spec_.simulation.max_lost_fraction, where));
+}
+
+std::string Simulation::fastest_accelerating() const {
+  std::size_t best = p_.size();
+  double a2 = -1;
+  for (std::size_t i = 0; i < p_.size() && i < acc_.size(); ++i) {
+    if (!is_fluid(p_.kind[i])) continue;
+    const double v = norm2(Vec3d(acc_[i]));
+    if (v > a2) a2 = v, best = i;
+  }
+  if (best == p_.size()) return "no fluid particle";
+  const Vec3d x = p_.pos[best];
+  const Vec3f v = p_.vel[best];
+  return fmt::format(
+      "fluid particle id {} at ({:.4g}, {:.4g}, {:.4g}) m, velocity ({:.3g}, "
+      "{:.3g}, {:.3g}) m/s, acceleration {:.3g} m/s^2",
+      p_.id[best], x.x, x.y, x.z, v.x, v.y, v.z, std::sqrt(a2));
 }
 
 std::vector<float> Simulation::pressures() const {

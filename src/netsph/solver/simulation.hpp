@@ -47,6 +47,14 @@ struct StepDiagnostics {
   int resorts = 0;                 ///< extra sorts because the half step exceeded the grid skin
   OpenBoundaryCounts open;         ///< open-boundary events since the start
   std::size_t mdbc_fallbacks = 0;  ///< mDBC ghosts solved at zeroth order, last step
+  /// The last particles that left the domain (not through an outlet): up to 5, for the report
+  /// of a run stopped for losing fluid.
+  struct Lost {
+    std::uint32_t id;
+    Vec3d pos;
+    Vec3f vel;
+  };
+  std::vector<Lost> last_lost;
 };
 
 class Simulation {
@@ -101,6 +109,11 @@ class Simulation {
   void advance_bodies(bool corrector, double dt);
   Vec3f body_point_velocity(std::size_t i) const;
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
+  /// Stops the run when fluid leaves the domain too fast (SimulationSpec::max_lost_fraction).
+  void check_lost(std::size_t lost_this_step) const;
+  /// "particle id N (kind) at (x, y, z) m, velocity (...) m/s, |a| ..." of the fluid particle
+  /// with the largest acceleration in the last rates pass.
+  std::string fastest_accelerating() const;
 
   CaseSpec spec_;  ///< the case, with one [[body]] per net knot appended
   std::vector<CoupledNet> nets_;
@@ -112,6 +125,8 @@ class Simulation {
   std::vector<Vec3f> acc_;
   std::vector<Real> drho_;
   std::vector<std::uint32_t> order_;
+  std::vector<char> kept_;  // scratch of sort_particles: which particles the sort kept
+  std::size_t initial_fluid_ = 0;
   std::vector<WallKinematics> walls_;  // by wall index
   ContactModel contact_model_;
   std::vector<Vec3f> contact_;  // contact acceleration of body particles
