@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Debian's ParaView opens netsph's output: tools/render_snapshot.py (pvbatch under xvfb-run)
 # reads the last snapshot of a small coupled-net run (tests/cases/good/plot_smoke.toml) and
-# the net's VTK series, renders a PNG, and reports what it read; the point count and the speed
-# and pressure ranges must equal those in the snapshot's HDF5 file (read with h5py). Skipped
+# the net's XDMF series, renders a PNG, and reports what it read; the point count and the speed
+# and pressure ranges must equal those in the snapshot's HDF5 file (read with h5py), the net's
+# knots, twines and tension those of its last VTK file. Skipped
 # (exit 77, and said so) when pvbatch or xvfb-run is not installed:
 #   apt-get install --no-install-recommends python3-paraview xvfb xauth
 set -euo pipefail
@@ -39,6 +40,15 @@ assert abs(report["speed_range"][1] - speed.max()) <= 1e-6 * speed.max(), (repor
 assert abs(report["pressure_range"][0] - pressure.min()) <= 1e-3, (report, pressure.min())
 assert abs(report["pressure_range"][1] - pressure.max()) <= 1e-3, (report, pressure.max())
 import os
+# The net: ParaView's knots and twines are the generator's, its tensions the VTK file's.
+nets = report["nets"]
+assert list(nets) == ["tether"], nets
+last_vtk = sorted(glob.glob(run + "/net_tether_*.vtk"), key=lambda p: int(p.split("_")[-1][:-4]))[-1]
+tokens = open(last_vtk).read().split()
+knots, twines = int(tokens[tokens.index("POINTS") + 1]), int(tokens[tokens.index("LINES") + 1])
+tension = float(tokens[tokens.index("tension") + 5])  # SCALARS tension double 1 LOOKUP_TABLE default v
+assert nets["tether"]["points"] == knots and nets["tether"]["cells"] == twines, (nets, knots, twines)
+assert abs(nets["tether"]["tension_range"][1] - tension) <= 1e-6 * tension, (nets, tension)
 size = os.path.getsize(report["image"])
 assert size > 20000, f"the rendered image is only {size} bytes"
 print(f"ok: ParaView read {n} points, speed up to {speed.max():.4g} m/s, image {size} bytes")

@@ -16,7 +16,7 @@ trap 'rm -rf "$tmp"' EXIT
 wall=$(head -1 "$tmp/whole/series.csv" | tr ',' '\n' | grep -n '^wall_time' | cut -d: -f1)
 drop_wall() { cut -d, -f"1-$((wall - 1)),$((wall + 1))-" "$1"; }
 diff <(drop_wall "$tmp/whole/series.csv") <(drop_wall "$tmp/split/series.csv")
-for f in bodies.csv probes/line.csv probes/line_mean.csv probes/side_mean.csv tether.vtk.series \
+for f in bodies.csv probes/line.csv probes/line_mean.csv probes/side_mean.csv tether.vtk.series tether.xdmf \
          net_tether_6.vtk particles.xdmf; do
   cmp "$tmp/whole/$f" "$tmp/split/$f" || { echo "$f differs"; exit 1; }
 done

@@ -4,10 +4,10 @@
 
 Loads RUN_DIR/particles.xdmf (the fluid and boundary particles; by absolute path, which
 ParaView 5.11's XDMF 3 reader needs) at its last time, draws the fluid particles coloured by
-speed and the walls and bodies in grey, adds every net's <net>.vtk.series (knots as points,
-twines as lines coloured by tension), and writes the picture (default RUN_DIR/plots/
-snapshot.png). --report writes what ParaView read: the point count and the speed and pressure
-ranges of the last snapshot, for tests/paraview_test.sh. Debian's ParaView renders through GLX
+speed and the walls and bodies in grey, adds every net's <net>.xdmf (knots as points, twines
+as lines coloured by tension), and writes the picture (default RUN_DIR/plots/snapshot.png).
+--report writes what ParaView read: the point count and the speed and pressure ranges of the
+last snapshot, and each net's knots, twines and tension range, for tests/paraview_test.sh. Debian's ParaView renders through GLX
 only, so it needs an X server: xvfb-run provides one on a machine without a display.
 """
 import argparse
@@ -76,9 +76,18 @@ def main():
     solid_display.AmbientColor = solid_display.DiffuseColor = [0.6, 0.6, 0.6]
     solid_display.Opacity = 0.3
 
-    for series in sorted(glob.glob(os.path.join(run_dir, "*.vtk.series"))):
-        net = pv.OpenDataFile(series)
+    nets = {}
+    for xdmf_net in sorted(glob.glob(os.path.join(run_dir, "*.xdmf"))):
+        if os.path.basename(xdmf_net) == "particles.xdmf":
+            continue
+        net = pv.Xdmf3ReaderT(FileName=[xdmf_net])
         net.UpdatePipeline(last)
+        info = net.GetDataInformation()
+        nets[os.path.basename(xdmf_net)[:-5]] = {
+            "points": info.GetNumberOfPoints(),
+            "cells": info.GetNumberOfCells(),
+            "tension_range": list(net.CellData["tension"].GetRange()),
+        }
         shown = pv.Show(net, view)
         pv.ColorBy(shown, ("CELLS", "tension"))
         tension = pv.GetColorTransferFunction("tension")
@@ -104,6 +113,7 @@ def main():
             "speed_range": list(speed.PointData["speed"].GetRange()),
             "pressure_range": list(speed.PointData["pressure"].GetRange()),
             "image": os.path.abspath(out),
+            "nets": nets,
         }
         del data
         with open(args.report, "w") as f:

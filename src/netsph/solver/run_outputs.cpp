@@ -109,8 +109,10 @@ RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool sn
                               *resume_time(resume))
                   : CsvSeries(dir_ / "series.csv",
                               with_force_columns(series_columns(sim.model().dims), forces_, sim))) {
-  for (const CoupledNet& net : sim.nets())
+  for (const CoupledNet& net : sim.nets()) {
     net_vtk_.emplace_back(dir_ / (net.model.name + ".vtk.series"));
+    net_xdmf_.emplace_back(dir_ / (net.model.name + ".xdmf"));
+  }
   if (snapshots)
     snapshots_ = std::make_unique<SnapshotWriter>(dir_, "particles", resume != nullptr);
   if (!sim.bodies().empty()) {
@@ -160,6 +162,7 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
       list.emplace_back("net_" + sim.nets()[k].model.name + "_" + std::to_string(i) + ".vtk",
                         times[i]);
     net_vtk_[k].reset(std::move(list));
+    net_xdmf_[k].resume(times.size());
   }
 }
 
@@ -193,6 +196,7 @@ void RunOutputs::write_net_files(const Simulation& sim, bool final) {
         "net_" + net.model.name + "_" + std::to_string(snapshots_->count() - 1) + ".vtk";
     write_net_vtk(dir_ / file, net.model, net.initial);
     net_vtk_[n].add(file, sim.time());
+    net_xdmf_[n].add(net.model, net.initial, sim.time());
   }
 }
 

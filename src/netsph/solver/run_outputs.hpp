@@ -3,7 +3,8 @@
 //   particles.xdmf + snapshots/*.h5   fluid and boundary particles (ParaView)
 //   series.csv                        global quantities over time, one row per series interval
 //   bodies.csv                        rigid bodies' states and forces (solver/body_forces.hpp)
-//   <net>.vtk.series + net_<net>_NNNN.vtk, knots_<net>.csv, profile_<net>.csv   coupled nets
+//   <net>.xdmf, <net>.vtk.series + net_<net>_NNNN.vtk, knots_<net>.csv, profile_<net>.csv
+//                                     coupled nets
 //   probes/<name>.csv, probes/<name>_mean.csv   velocity probes (solver/probes.hpp)
 //   summary.json                      the run as a whole (rewritten atomically, also on failure)
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "netsph/io/csv_series.hpp"
 #include "netsph/io/snapshot_writer.hpp"
 #include "netsph/net/net_output.hpp"
+#include "netsph/net/net_xdmf.hpp"
 #include "netsph/solver/body_forces.hpp"
 #include "netsph/solver/net_records.hpp"
 #include "netsph/solver/probes.hpp"
@@ -77,6 +79,7 @@ class RunOutputs {
   CsvSeries series_;
   std::unique_ptr<CsvSeries> bodies_csv_;
   std::vector<NetVtkSeries> net_vtk_;  // one per coupled net
+  std::vector<NetXdmfSeries> net_xdmf_;
   double snapshot_every_ = 0, series_every_ = 0;
   double next_snapshot_ = 0, next_series_ = 0;
   std::int64_t last_snapshot_step_ = -1, last_series_step_ = -1;
