@@ -23,7 +23,7 @@ for f in forces_tether.png net_tether.png net_tether_shape.png probe_line.png pr
   check "$f"
 done
 rm -r "$out/plots"
-"$netsph" -q plot "$out"
+"$netsph" -q plot "$out" --times 0,0.04
 check probe_side.png
 if "$netsph" -q plot "$out/no-such-folder" 2>/dev/null; then
   echo "netsph plot accepted a folder without summary.json"; exit 1

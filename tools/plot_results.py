@@ -6,7 +6,8 @@ writes into DIR/plots/:
   forces_<group>.png        drag (Fx) and lift (Fz) of each force group over time, the
                             averaging window shaded, its mean drawn; Cd on a second axis
   net_<net>.png             a net's largest deflection and twine tension over time
-  net_<net>_shape.png       the net seen from the side (x-z) at five moments of the run
+  net_<net>_shape.png       the net seen from the side (x-z) at five moments of the run, or at
+                            the times given as a second argument ("0.5,1,2.5")
   probe_<name>.png          line probes: mean u_x / U along the line (the paper's Figures 13,
                             19, 24); plane probes: contours of the mean speed (Figures 17, 18,
                             22, 23), with the nets' final knots drawn in
@@ -142,13 +143,17 @@ def net_snapshots(folder, name):
     return [(e["time"], os.path.join(folder, e["name"])) for e in files]
 
 
-def plot_net_shapes(folder, summary, case, out):
+def plot_net_shapes(folder, summary, case, out, times=None):
     written = []
     for n in summary.get("nets", []):
         snaps = net_snapshots(folder, n["name"])
         if not snaps:
             continue
-        picks = sorted({round(i * (len(snaps) - 1) / 4) for i in range(5)})
+        if times:  # the snapshots nearest the times asked for
+            picks = sorted({min(range(len(snaps)), key=lambda i: abs(snaps[i][0] - t))
+                            for t in times})
+        else:  # five moments spread over the run
+            picks = sorted({round(i * (len(snaps) - 1) / 4) for i in range(5)})
         cmap = plt.get_cmap("viridis")
         fig, ax = plt.subplots(figsize=(6, 6))
         for k, i in enumerate(picks):
@@ -235,10 +240,12 @@ def plot_probes(folder, summary, case, out):
 
 
 def main(argv):
-    if len(argv) != 2:
-        print("usage: plot_results.py RUN_FOLDER", file=sys.stderr)
+    if len(argv) not in (2, 3):
+        print("usage: plot_results.py RUN_FOLDER [TIMES]  (TIMES: net shapes at t1,t2,... s)",
+              file=sys.stderr)
         return 2
     folder = argv[1]
+    times = [float(t) for t in argv[2].split(",")] if len(argv) == 3 and argv[2] else None
     summary_path = os.path.join(folder, "summary.json")
     if not os.path.exists(summary_path):
         print(f"plot_results: {summary_path} not found: not a netsph run folder", file=sys.stderr)
@@ -257,7 +264,7 @@ def main(argv):
         written += plot_forces(series, summary, case, out)
         written += plot_net_series(series, summary, case, out)
         written += plot_time_step(series, case, out)
-        written += plot_net_shapes(folder, summary, case, out)
+        written += plot_net_shapes(folder, summary, case, out, times)
         written += plot_probes(folder, summary, case, out)
     for w in written:
         print(w)

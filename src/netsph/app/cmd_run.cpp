@@ -164,11 +164,11 @@ int run_command(const RunArgs& args) {
 
 namespace netsph::app {
 
-int plot_command(const std::string& run_dir) {
+int plot_command(const std::string& run_dir, const std::string& shape_times) {
   if (!std::filesystem::exists(std::filesystem::path(run_dir) / "summary.json")) {
     throw Error(run_dir, "not a netsph run folder (no summary.json)");
   }
-  return make_plots(run_dir) ? 0 : 1;
+  return make_plots(run_dir, shape_times) ? 0 : 1;
 }
 
 }  // namespace netsph::app

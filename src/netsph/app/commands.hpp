@@ -34,7 +34,7 @@ struct RunArgs {
 int run_command(const RunArgs& args);
 
 /// `netsph plot DIR`: PNG plots of a run folder.
-int plot_command(const std::string& run_dir);
+int plot_command(const std::string& run_dir, const std::string& shape_times);
 
 struct CheckArgs {
   CaseChoice case_choice;

@@ -70,6 +70,10 @@ int main(int argc, char** argv) {
   auto* plot_cmd =
       app.add_subcommand("plot", "write PNG plots of a run folder into DIR/plots (matplotlib)");
   plot_cmd->add_option("DIR", plot_dir, "the run's output folder")->required();
+  std::string shape_times;
+  plot_cmd->add_option("--times", shape_times,
+                       "draw the nets' shapes at these times, s (e.g. 0.5,1,2.5; default: five "
+                       "moments spread over the run)");
 
   CheckArgs check;
   auto* check_cmd = app.add_subcommand(
@@ -127,7 +131,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*check_cmd) return check_command(check);
-    if (*plot_cmd) return plot_command(plot_dir);
+    if (*plot_cmd) return plot_command(plot_dir, shape_times);
     if (*net_cmd) return net_command(net);
     if (*validate_cmd) {
       validate.quiet = quiet;

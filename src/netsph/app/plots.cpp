@@ -24,7 +24,7 @@ std::string shell_quote(const std::string& s) {
 
 }  // namespace
 
-bool make_plots(const std::filesystem::path& run_dir) {
+bool make_plots(const std::filesystem::path& run_dir, const std::string& shape_times) {
   const std::string probe =
       fmt::format("{} -c 'import matplotlib, numpy' > /dev/null 2>&1", kPython);
   if (std::system(probe.c_str()) != 0) {
@@ -33,8 +33,8 @@ bool make_plots(const std::filesystem::path& run_dir) {
                  kPython, run_dir.string());
     return false;
   }
-  const std::string command = fmt::format("{} - {} > {} 2>&1", kPython,
-                                          shell_quote(run_dir.string()),
+  const std::string command = fmt::format("{} - {} {} > {} 2>&1", kPython,
+                                          shell_quote(run_dir.string()), shell_quote(shape_times),
                                           shell_quote((run_dir / "plots.log").string()));
   std::FILE* pipe = popen(command.c_str(), "w");
   if (!pipe) {
