@@ -14,19 +14,9 @@ namespace fs = std::filesystem;
 
 constexpr const char* kMagic = "netsph checkpoint 1";
 
-[[noreturn]] void fail(const fs::path& path, const std::string& what) {
-  const std::string cause = h5::last_error_message();
-  throw Error(path.string(), cause.empty() ? what : what + ": " + cause);
-}
-
-hid_t check_id(hid_t id, const fs::path& path, const std::string& what) {
-  if (id < 0) fail(path, what);
-  return id;
-}
-
-void check_status(herr_t status, const fs::path& path, const std::string& what) {
-  if (status < 0) fail(path, what);
-}
+using h5::check_id;
+using h5::check_status;
+using h5::fail;
 
 template <class T>
 void write_group(hid_t file, const char* group, const std::map<std::string, std::vector<T>>& m,

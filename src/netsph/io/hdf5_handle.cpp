@@ -1,5 +1,7 @@
 #include "netsph/io/hdf5_handle.hpp"
 
+#include "netsph/core/error.hpp"
+
 namespace netsph::h5 {
 namespace {
 
@@ -27,6 +29,20 @@ std::string last_error_message() {
     }
   }
   return message;
+}
+
+void fail(const std::filesystem::path& path, const std::string& what) {
+  const std::string cause = last_error_message();
+  throw Error(path.string(), cause.empty() ? what : what + ": " + cause);
+}
+
+hid_t check_id(hid_t id, const std::filesystem::path& path, const std::string& what) {
+  if (id < 0) fail(path, what);
+  return id;
+}
+
+void check_status(herr_t status, const std::filesystem::path& path, const std::string& what) {
+  if (status < 0) fail(path, what);
 }
 
 }  // namespace netsph::h5

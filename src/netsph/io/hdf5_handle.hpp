@@ -4,6 +4,7 @@
 // failure shows as one netsph message naming the file instead of a 20-line HDF5 stack.
 #include <hdf5.h>
 
+#include <filesystem>
 #include <string>
 #include <utility>
 
@@ -67,6 +68,13 @@ class SilenceErrors {
   H5E_auto2_t func_ = nullptr;
   void* data_ = nullptr;
 };
+
+/// Throws netsph::Error naming the file, with HDF5's most specific cause appended.
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what);
+/// `id`, or fail(path, what) when it is an HDF5 error (negative).
+hid_t check_id(hid_t id, const std::filesystem::path& path, const std::string& what);
+/// fail(path, what) when `status` is an HDF5 error (negative).
+void check_status(herr_t status, const std::filesystem::path& path, const std::string& what);
 
 /// The most specific message on HDF5's error stack (e.g. "unable to open file: name =
 /// '...', errno = 2, error message = 'No such file or directory'"), or "" when empty.

@@ -59,20 +59,9 @@ hid_t memory_type(const FieldSpec& f) {
   return H5T_NATIVE_UINT32;  // "UInt"
 }
 
-// Throws netsph::Error naming the file, with HDF5's most specific cause appended.
-[[noreturn]] void fail(const fs::path& path, const std::string& what) {
-  const std::string cause = h5::last_error_message();
-  throw Error(path.string(), cause.empty() ? what : what + ": " + cause);
-}
-
-hid_t check_id(hid_t id, const fs::path& path, const std::string& what) {
-  if (id < 0) fail(path, what);
-  return id;
-}
-
-void check_status(herr_t status, const fs::path& path, const std::string& what) {
-  if (status < 0) fail(path, what);
-}
+using h5::check_id;
+using h5::check_status;
+using h5::fail;
 
 // Plain contiguous layout (no chunking, no compression: snapshots are written often and
 // must be fast), and no fill value: every byte is written by H5Dwrite right after.
