@@ -25,6 +25,7 @@ int validate_command(const ValidateArgs& args) {
   o.only = args.only;
   o.out_dir = args.out_dir;
   o.progress = !args.quiet;
+  o.reuse = args.reuse;
   const ValidationReport report = run_validation(o);
   const std::string table = format_validation_table(report);
   fmt::print("\n{}\n", table);

@@ -66,6 +66,7 @@ struct ValidateArgs {
   std::string json_path;
   int threads = 0;
   bool quiet = false;
+  bool reuse = false;
 };
 int validate_command(const ValidateArgs& args);
 

@@ -114,6 +114,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   validate_cmd->add_option("--json", validate.json_path, "also write the table to this JSON file");
   validate_cmd->add_option("--threads", validate.threads, "OpenMP threads (0: all cores)");
+  validate_cmd->add_flag("--reuse", validate.reuse,
+                         "keep the runs already completed in the output folder (same built-in "
+                         "case and overrides) instead of running them again");
 
   auto* cases_cmd = app.add_subcommand("cases", "list the built-in cases");
 

@@ -582,27 +582,29 @@ CaseSpec read_case(std::string_view text, const std::string& source_name,
   toml::table root = parse_toml(text, source_name);
   apply_overrides(root, overrides);
   const TomlSource source(source_name);
-  return case_detail::CaseReader(root, source).read(default_name);
+  CaseSpec spec = case_detail::CaseReader(root, source).read(default_name);
+  spec.overrides = overrides;
+  return spec;
 }
+
+}  // namespace
 
 std::string read_file_text(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
-    throw Error(path.string(), "cannot read case file: it is a directory");
+    throw Error(path.string(), "cannot read the file: it is a directory");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw Error(path.string(), fmt::format("cannot read case file: {}", std::strerror(errno)));
+    throw Error(path.string(), fmt::format("cannot read the file: {}", std::strerror(errno)));
   }
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) {
-    throw Error(path.string(), fmt::format("cannot read case file: {}", std::strerror(errno)));
+    throw Error(path.string(), fmt::format("cannot read the file: {}", std::strerror(errno)));
   }
   return text.str();
 }
-
-}  // namespace
 
 CaseSpec read_case_file(const std::filesystem::path& path,
                         const std::vector<std::string>& overrides) {

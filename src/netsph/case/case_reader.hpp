@@ -20,4 +20,7 @@ CaseSpec read_case_file(const std::filesystem::path& path,
 CaseSpec read_case_string(std::string_view toml_text, const std::string& source_name,
                           const std::vector<std::string>& overrides = {});
 
+/// A whole file as text; throws netsph::Error naming the file when it cannot be read.
+std::string read_file_text(const std::filesystem::path& path);
+
 }  // namespace netsph

@@ -49,7 +49,7 @@ nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const Run
   const GlobalMeasures g = measure(sim);
   nlohmann::json j;
   j["netsph_version"] = NETSPH_VERSION;
-  j["case"] = {{"name", s.simulation.name}, {"source", s.source}};
+  j["case"] = {{"name", s.simulation.name}, {"source", s.source}, {"overrides", s.overrides}};
   j["status"] = r.status;
   if (!r.message.empty()) j["message"] = r.message;
   j["model"] = {

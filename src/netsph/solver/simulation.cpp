@@ -371,7 +371,7 @@ void Simulation::step() {
 void Simulation::check_lost(std::size_t lost_this_step) const {
   if (diag_.lost_total == 0) return;
   const double fluid = static_cast<double>(std::max<std::size_t>(initial_fluid_, 1));
-  const bool burst = lost_this_step > std::max(10.0, 0.01 * fluid);
+  const bool burst = static_cast<double>(lost_this_step) > std::max(10.0, 0.01 * fluid);
   const bool total =
       static_cast<double>(diag_.lost_total) > spec_.simulation.max_lost_fraction * fluid;
   if (!burst && !total) return;

@@ -31,12 +31,17 @@ struct ValidationOptions {
   std::vector<std::string> only;  ///< entry names; empty: all (or all quick ones)
   std::filesystem::path out_dir = "out/validate";
   bool progress = true;
+  /// Keep a run whose folder already holds a completed summary.json of the same built-in case
+  /// and overrides (an interrupted `validate` picks up where it stopped). The case text is not
+  /// compared: after changing a built-in case, run without --reuse.
+  bool reuse = false;
 };
 
 /// What an entry's runs need: where to write, and whether to show progress.
 struct ValidationContext {
   std::filesystem::path out_dir;  ///< the entry's own folder
   bool progress = true;
+  bool reuse = false;  ///< see ValidationOptions::reuse
   /// Runs a built-in case (a cases/ path without .toml) with overrides into out_dir/<subdir>;
   /// returns its summary.json. Throws netsph::Error when the run does not complete.
   nlohmann::json run_case(const std::string& builtin, const std::vector<std::string>& overrides,

@@ -28,6 +28,24 @@ CaseSpec load_builtin(const std::string& name, const std::vector<std::string>& o
   return read_case_string(text, "builtin:" + name, overrides);
 }
 
+/// The summary.json of a completed earlier run of the same built-in case and overrides in dir,
+/// or null. A summary without "overrides" comes from a run before they were recorded and is
+/// taken to have none.
+nlohmann::json completed_run(const std::filesystem::path& dir, const CaseSpec& spec) {
+  const std::filesystem::path file = dir / "summary.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) return nullptr;
+  nlohmann::json s = nlohmann::json::parse(read_file_text(file), nullptr, false);
+  if (s.is_discarded() || s.value("status", "") != "completed" || !s.contains("case")) {
+    return nullptr;
+  }
+  const nlohmann::json& c = s.at("case");
+  const std::vector<std::string> overrides =
+      c.value("overrides", std::vector<std::string>{});
+  if (c.value("source", "") != spec.source || overrides != spec.overrides) return nullptr;
+  return s;
+}
+
 }  // namespace
 
 nlohmann::json ValidationContext::run_case(const std::string& builtin,
@@ -35,6 +53,13 @@ nlohmann::json ValidationContext::run_case(const std::string& builtin,
                                            const std::string& subdir) const {
   const CaseSpec spec = load_builtin(builtin, overrides);
   const std::filesystem::path dir = out_dir / subdir;
+  if (reuse && !spec.net_only()) {
+    nlohmann::json earlier = completed_run(dir, spec);
+    if (!earlier.is_null()) {
+      spdlog::info("validate: reusing the completed run of {} in {}", builtin, dir.string());
+      return earlier;
+    }
+  }
   spdlog::info("validate: running {} into {}", builtin, dir.string());
   if (spec.net_only()) {
     NetRunOptions o;
@@ -401,7 +426,7 @@ ValidationReport run_validation(const ValidationOptions& options) {
     if (!chosen) continue;
     spdlog::info("validate: {} (section {}, {}; about {:.0f} min on 2 cores)", e.name, e.section,
                  e.title, e.minutes);
-    ValidationContext ctx{options.out_dir / e.name, options.progress};
+    ValidationContext ctx{options.out_dir / e.name, options.progress, options.reuse};
     try {
       for (ValidationRow& r : e.run(ctx)) report.rows.push_back(std::move(r));
       report.entries_run.push_back(e.name);
