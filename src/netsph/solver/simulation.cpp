@@ -52,6 +52,7 @@ void Simulation::build_view(bool half_step) {
   for (const auto& w : walls_) mirrors |= !w.shows_own_velocity;
   for (const auto& b : scene_.bodies) mirrors |= !b.shows_own_velocity();
   if (!mirrors) return;
+  view_.with_continuity_velocity();
   const auto n = static_cast<std::int64_t>(p_.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -170,14 +171,15 @@ void Simulation::sort_particles(bool mid_step) {
   gather_into(p_.kind, order_, scratch_kind_);
   gather_into(p_.id, order_, scratch_u32_);
   gather_into(p_.group, order_, scratch_u32_);
-  gather_into(p_.ghost, order_, scratch_f3_);
   if (!mid_step) {
     // At the start of a step the step-start arrays hold nothing live: use them as scratch.
+    gather_into(p_.ghost, order_, start_.vel);
     gather_into(p_.pos, order_, start_.pos);
     gather_into(p_.vel, order_, start_.vel);
     gather_into(p_.rho, order_, start_.rho);
   } else {
     // Rare (a half step beyond the grid skin): these scratch arrays grow only then.
+    gather_into(p_.ghost, order_, scratch_f3_);
     gather_into(p_.pos, order_, scratch_d3_);
     gather_into(p_.vel, order_, scratch_f3_);
     gather_into(p_.rho, order_, scratch_f_);

@@ -51,50 +51,67 @@ struct Neighbour {
   Real fluid_b;  ///< 1 when b is fluid, 0 otherwise (multiplies the delta-SPH term)
 };
 
+/// What one neighbour b adds to particle a's rates.
+struct PairRates {
+  Vec3f acc;     ///< m/s^2
+  Real drho;     ///< kg/m^3/s
+  Real visc_dt;  ///< |h v_ab.r_ab / (r^2 + eta^2)|, 1/s (the sums keep the maximum)
+};
+
+// The pair functions take the neighbour by value, return by value and spell vectors out in
+// components: inside an `omp simd` loop any local whose address is taken (a reference
+// parameter, a Vec3 member operator) becomes a per-lane array in memory, and that stopped
+// GCC 12 from vectorising the pair loops at all (docs/PERFORMANCE.md, "Where the time goes").
+
 /// Fluid particle a: continuity, momentum, viscosity and density diffusion from neighbour b.
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff>
-NETSPH_HD void fluid_pair_rates(const FluidModel& m, Real rho_a, Real press_a, const Neighbour& b,
-                                RateSums& s) {
+NETSPH_HD PairRates fluid_pair_rates(const FluidModel& m, Real rho_a, Real press_a,
+                                     const Neighbour b) {
   const Real r = std::sqrt(b.r2);
   const Real fac = kernel_grad_factor<Kernel>(m.kernel, r);  // grad W = fac * r_ab
-  const Real dot_vr = dot(b.vab, b.rab);
+  const Real dot_vr = b.vab.x * b.rab.x + b.vab.y * b.rab.y + b.vab.z * b.rab.z;
+  const Real dot_vr_c = b.vab_c.x * b.rab.x + b.vab_c.y * b.rab.y + b.vab_c.z * b.rab.z;
   const Real inv_r2_eta = Real(1) / (b.r2 + m.eta2);
 
   // Continuity: m_b v_ab . grad W.
-  s.drho += b.mass_b * fac * dot(b.vab_c, b.rab);
+  Real drho = b.mass_b * fac * dot_vr_c;
 
   // Pressure, plus artificial viscosity for approaching pairs.
   Real p_term = (press_a + b.press_b) / (rho_a * b.rho_b);
   const Real mu = m.kernel.h * dot_vr * inv_r2_eta;
   if constexpr (Visc == ViscosityModel::Artificial) {
-    if (dot_vr < Real(0)) p_term += -m.alpha * m.eos.c0 * mu * Real(2) / (rho_a + b.rho_b);
+    const Real pi_ab = -m.alpha * m.eos.c0 * mu * Real(2) / (rho_a + b.rho_b);
+    p_term += dot_vr < Real(0) ? pi_ab : Real(0);
   }
-  s.acc += b.rab * (-b.mass_b * p_term * fac);
+  const Real f_p = -b.mass_b * p_term * fac;
+  Real ax = b.rab.x * f_p, ay = b.rab.y * f_p, az = b.rab.z * f_p;
   if constexpr (Visc == ViscosityModel::Laminar) {
     const Real lam =
         b.mass_b * Real(4) * m.nu * fac * b.r2 / ((b.r2 + m.eta2_laminar) * (rho_a + b.rho_b));
-    s.acc += b.vab * lam;
+    ax += b.vab.x * lam, ay += b.vab.y * lam, az += b.vab.z * lam;
   }
-  const Real amu = mu < Real(0) ? -mu : mu;
-  s.visc_dt = s.visc_dt > amu ? s.visc_dt : amu;
 
   // Density diffusion towards fluid neighbours.
   if constexpr (Diff != DensityDiffusion::None) {
     Real drho_ab = rho_a - b.rho_b;
-    if constexpr (Diff == DensityDiffusion::Fourtakas) drho_ab -= dot(m.hydro_grad, b.rab);
-    s.drho += b.fluid_b * m.delta_coef * drho_ab * fac * b.mass_b / b.rho_b;
+    if constexpr (Diff == DensityDiffusion::Fourtakas) {
+      drho_ab -= m.hydro_grad.x * b.rab.x + m.hydro_grad.y * b.rab.y + m.hydro_grad.z * b.rab.z;
+    }
+    drho += b.fluid_b * m.delta_coef * drho_ab * fac * b.mass_b / b.rho_b;
   }
+  return {{ax, ay, az}, drho, mu < Real(0) ? -mu : mu};
 }
 
 /// Boundary particle a under DBC (Crespo et al. 2007): only continuity, from fluid neighbours.
 template <class Kernel>
-NETSPH_HD void boundary_pair_rates(const FluidModel& m, const Neighbour& b, RateSums& s) {
+NETSPH_HD PairRates boundary_pair_rates(const FluidModel& m, const Neighbour b) {
   const Real r = std::sqrt(b.r2);
   const Real fac = kernel_grad_factor<Kernel>(m.kernel, r);
-  const Real dot_vr = dot(b.vab, b.rab);
-  s.drho += b.fluid_b * b.mass_b * fac * dot(b.vab_c, b.rab);
-  const Real amu = std::fabs(m.kernel.h * dot_vr / (b.r2 + m.eta2)) * b.fluid_b;
-  s.visc_dt = s.visc_dt > amu ? s.visc_dt : amu;
+  const Real dot_vr = b.vab.x * b.rab.x + b.vab.y * b.rab.y + b.vab.z * b.rab.z;
+  const Real dot_vr_c = b.vab_c.x * b.rab.x + b.vab_c.y * b.rab.y + b.vab_c.z * b.rab.z;
+  const Real drho = b.fluid_b * b.mass_b * fac * dot_vr_c;
+  const Real mu = m.kernel.h * dot_vr / (b.r2 + m.eta2);
+  return {{Real(0), Real(0), Real(0)}, drho, (mu < Real(0) ? -mu : mu) * b.fluid_b};
 }
 
 }  // namespace netsph

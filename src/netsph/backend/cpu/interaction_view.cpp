@@ -4,8 +4,8 @@ namespace netsph {
 
 void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin) {
   const auto n = static_cast<std::int64_t>(p.size());
-  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &cvx, &cvy, &cvz, &rho, &press, &fluid})
-    v->resize(p.size());
+  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &rho, &press, &fluid}) v->resize(p.size());
+  cvx.clear(), cvy.clear(), cvz.clear();
   solid.resize(p.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -13,7 +13,6 @@ void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec
     y[i] = static_cast<Real>(p.pos[i].y - origin.y);
     z[i] = static_cast<Real>(p.pos[i].z - origin.z);
     vx[i] = p.vel[i].x, vy[i] = p.vel[i].y, vz[i] = p.vel[i].z;
-    cvx[i] = vx[i], cvy[i] = vy[i], cvz[i] = vz[i];
     rho[i] = p.rho[i];
     press[i] = m.eos.pressure(p.rho[i]);
     fluid[i] = carries_fluid(p.kind[i]) ? Real(1) : Real(0);
@@ -22,6 +21,10 @@ void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec
             ? kWallSolid
             : (p.kind[i] == ParticleKind::Body ? static_cast<std::int32_t>(p.group[i]) : kNotSolid);
   }
+}
+
+void InteractionView::with_continuity_velocity() {
+  cvx = vx, cvy = vy, cvz = vz;
 }
 
 }  // namespace netsph

@@ -15,8 +15,11 @@ namespace netsph {
 
 struct InteractionView {
   std::vector<Real> x, y, z;
-  std::vector<Real> vx, vy, vz;     ///< velocity in the viscous terms
-  std::vector<Real> cvx, cvy, cvz;  ///< velocity in continuity (a solid's own velocity)
+  std::vector<Real> vx, vy, vz;  ///< velocity in the viscous terms
+  /// Velocity in continuity where it differs from vx (a solid under a mirror slip condition
+  /// shows its own velocity there). Empty unless with_continuity_velocity() was called: most
+  /// cases have no mirrored solid, and 12 bytes per particle are saved (docs/PERFORMANCE.md).
+  std::vector<Real> cvx, cvy, cvz;
   std::vector<Real> rho, press;
   std::vector<Real> fluid;  ///< 1 for fluid and buffer particles, 0 for wall and body particles
   /// Which solid a particle belongs to: kNotSolid (fluid, buffer), kWallSolid, or the body
@@ -24,14 +27,24 @@ struct InteractionView {
   std::vector<std::int32_t> solid;
   static constexpr std::int32_t kNotSolid = -1, kWallSolid = -2;
 
-  /// Copies the particles; the continuity velocity starts equal to the velocity (the caller
-  /// sets solids' own velocities where they differ: set_continuity_velocity).
+  /// Copies the particles. The continuity velocity is the velocity (no separate arrays)
+  /// until with_continuity_velocity().
   void build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin);
+  /// Gives the continuity velocity its own arrays, equal to the velocity; the caller then sets
+  /// solids' own velocities where they differ (set_continuity_velocity).
+  void with_continuity_velocity();
   void set_continuity_velocity(std::size_t i, const Vec3f& v) {
     cvx[i] = v.x, cvy[i] = v.y, cvz[i] = v.z;
   }
+  bool has_continuity_velocity() const { return !cvx.empty(); }
+  /// The arrays continuity reads: its own, or the viscous velocity when there are none.
+  const Real* continuity_vx() const { return has_continuity_velocity() ? cvx.data() : vx.data(); }
+  const Real* continuity_vy() const { return has_continuity_velocity() ? cvy.data() : vy.data(); }
+  const Real* continuity_vz() const { return has_continuity_velocity() ? cvz.data() : vz.data(); }
   std::size_t bytes() const {
-    return 12 * x.capacity() * sizeof(Real) + solid.capacity() * sizeof(std::int32_t);
+    return 9 * x.capacity() * sizeof(Real) +
+           (cvx.capacity() + cvy.capacity() + cvz.capacity()) * sizeof(Real) +
+           solid.capacity() * sizeof(std::int32_t);
   }
 };
 

@@ -15,57 +15,68 @@ struct FluidResult {
   Real div_r = 0;
 };
 
-/// Sums over the neighbours of fluid particle a. The loop body is branch-free apart from the
-/// range test so that the compiler vectorises it (omp simd with explicit reductions).
+/// The neighbours of one particle within the support, compacted: their offsets r_a - r_b and
+/// indices. The candidate scan (about 4 candidates per neighbour, in 25 short rows of cells)
+/// fills it; the pair loop then runs over neighbours only, in full vector lanes, with one
+/// reduction per batch instead of one per row.
+struct NeighbourBatch {
+  static constexpr int kCapacity = 128;
+  alignas(64) Real dx[kCapacity];
+  alignas(64) Real dy[kCapacity];
+  alignas(64) Real dz[kCapacity];
+  alignas(64) Real r2[kCapacity];
+  alignas(64) std::int32_t j[kCapacity];
+  int n = 0;
+};
+
+/// The pair sums of fluid particle a over one batch of its neighbours (omp simd: the body is
+/// branch-free and reads the neighbours' fields by gather).
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
-inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
-                              const NeighbourRanges& ranges, int nranges) {
-  const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
+inline FluidResult fluid_batch_sums(const FluidModel& model, const InteractionView& v,
+                                    std::uint32_t a, const NeighbourBatch& batch) {
+  // A local copy: the loop then reads the constants from registers; loads through the
+  // reference stay in the loop as masked loads that GCC 12 cannot vectorise.
+  const FluidModel m = model;
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
   const Real rho_a = v.rho[a], press_a = v.press[a];
-  const Real* __restrict x = v.x.data();
-  const Real* __restrict y = v.y.data();
-  const Real* __restrict z = v.z.data();
   const Real* __restrict vx = v.vx.data();
   const Real* __restrict vy = v.vy.data();
   const Real* __restrict vz = v.vz.data();
-  const Real* __restrict cvx = v.cvx.data();
-  const Real* __restrict cvy = v.cvy.data();
-  const Real* __restrict cvz = v.cvz.data();
+  // Read only, so restrict holds even when these alias vx, vy, vz (no mirrored solid).
+  const Real* __restrict cvx = v.continuity_vx();
+  const Real* __restrict cvy = v.continuity_vy();
+  const Real* __restrict cvz = v.continuity_vz();
   const Real* __restrict rho = v.rho.data();
   const Real* __restrict press = v.press.data();
   const Real* __restrict fluid = v.fluid.data();
+  const Real* __restrict bdx = batch.dx;
+  const Real* __restrict bdy = batch.dy;
+  const Real* __restrict bdz = batch.dz;
+  const Real* __restrict br2 = batch.r2;
+  const std::int32_t* __restrict bj = batch.j;
+  const int n = batch.n;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
   Real gx = 0, gy = 0, gz = 0, div = 0;
-  for (int k = 0; k < nranges; ++k) {
-    const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
-    // The neighbour's position is x[b] + shift: shifting a instead keeps the loop body plain.
-    const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
-               zs = za - ranges[k].shift.z;
 #pragma omp simd reduction(+ : ax, ay, az, dr, gx, gy, gz, div) reduction(max : vdt)
-    for (std::uint32_t b = b0; b < b1; ++b) {
-      const Real dx = xs - x[b], dy = ys - y[b], dz = zs - z[b];
-      const Real r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 < m.support2 && b != a) {
-        const Neighbour nb{{dx, dy, dz},
-                           r2,
-                           {vxa - vx[b], vya - vy[b], vza - vz[b]},
-                           {vxa - cvx[b], vya - cvy[b], vza - cvz[b]},
-                           rho[b],
-                           press[b],
-                           m.mass,
-                           fluid[b]};
-        RateSums s;
-        fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb, s);
-        ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
-        vdt = std::max(vdt, s.visc_dt);
-        if constexpr (Shift) {
-          // grad_a W = F r_ab; V_b = m / rho_b (Lind et al. 2012).
-          const Real vf = m.mass / rho[b] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
-          gx += vf * dx, gy += vf * dy, gz += vf * dz;
-          div -= vf * r2;
-        }
-      }
+  for (int k = 0; k < n; ++k) {
+    const std::int32_t b = bj[k];
+    const Real dx = bdx[k], dy = bdy[k], dz = bdz[k], r2 = br2[k];
+    const Neighbour nb{{dx, dy, dz},
+                       r2,
+                       {vxa - vx[b], vya - vy[b], vza - vz[b]},
+                       {vxa - cvx[b], vya - cvy[b], vza - cvz[b]},
+                       rho[b],
+                       press[b],
+                       m.mass,
+                       fluid[b]};
+    const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
+    ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
+    vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
+    if constexpr (Shift) {
+      // grad_a W = F r_ab; V_b = m / rho_b (Lind et al. 2012).
+      const Real vf = m.mass / rho[b] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
+      gx += vf * dx, gy += vf * dy, gz += vf * dz;
+      div -= vf * r2;
     }
   }
   FluidResult out;
@@ -77,19 +88,66 @@ inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std
   return out;
 }
 
+inline void accumulate(FluidResult& sum, const FluidResult& part) {
+  sum.rates.acc += part.rates.acc;
+  sum.rates.drho += part.rates.drho;
+  sum.rates.visc_dt = std::max(sum.rates.visc_dt, part.rates.visc_dt);
+  sum.grad_c += part.grad_c;
+  sum.div_r += part.div_r;
+}
+
+/// Sums over the neighbours of fluid particle a: the candidate scan compacts the neighbours
+/// into batches, and fluid_batch_sums sums each batch.
+template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
+inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
+                              const NeighbourRanges& ranges, int nranges) {
+  const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
+  const Real* __restrict x = v.x.data();
+  const Real* __restrict y = v.y.data();
+  const Real* __restrict z = v.z.data();
+  const Real support2 = m.support2;
+  NeighbourBatch batch;
+  FluidResult out;
+  for (int k = 0; k < nranges; ++k) {
+    const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
+    // The neighbour's position is x[b] + shift: shifting a instead keeps the loop body plain.
+    const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
+               zs = za - ranges[k].shift.z;
+    for (std::uint32_t b = b0; b < b1; ++b) {
+      const Real dx = xs - x[b], dy = ys - y[b], dz = zs - z[b];
+      const Real r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < support2 && b != a) {
+        if (batch.n == NeighbourBatch::kCapacity) {
+          accumulate(out, fluid_batch_sums<Kernel, Visc, Diff, Shift>(m, v, a, batch));
+          batch.n = 0;
+        }
+        const int q = batch.n++;
+        batch.dx[q] = dx, batch.dy[q] = dy, batch.dz[q] = dz, batch.r2[q] = r2;
+        batch.j[q] = static_cast<std::int32_t>(b);
+      }
+    }
+  }
+  if (batch.n > 0) accumulate(out, fluid_batch_sums<Kernel, Visc, Diff, Shift>(m, v, a, batch));
+  return out;
+}
+
 template <class Kernel>
-inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
+inline RateSums wall_sums(const FluidModel& model, const InteractionView& v, std::uint32_t a,
                           const NeighbourRanges& ranges, int nranges) {
+  // A local copy: the loop then reads the constants from registers; loads through the
+  // reference stay in the loop as masked loads that GCC 12 cannot vectorise.
+  const FluidModel m = model;
   const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
-  const Real cxa = v.cvx[a], cya = v.cvy[a], cza = v.cvz[a];  // the solid's own velocity
+  // the solid's own velocity
+  const Real cxa = v.continuity_vx()[a], cya = v.continuity_vy()[a], cza = v.continuity_vz()[a];
   Real dr = 0, vdt = 0;
   for (int k = 0; k < nranges; ++k) {
     const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
     const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
                zs = za - ranges[k].shift.z;
 #pragma omp simd reduction(+ : dr) reduction(max : vdt)
-    for (std::uint32_t b = b0; b < b1; ++b) {
+    for (std::int64_t b = b0; b < std::int64_t(b1); ++b) {  // signed: a contiguous load, no gather
       const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
       const Real r2 = dx * dx + dy * dy + dz * dz;
       if (r2 < m.support2 && v.fluid[b] > Real(0)) {
@@ -101,10 +159,9 @@ inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::ui
                            v.press[b],
                            m.mass,
                            v.fluid[b]};
-        RateSums s;
-        boundary_pair_rates<Kernel>(m, nb, s);
+        const PairRates s = boundary_pair_rates<Kernel>(m, nb);
         dr += s.drho;
-        vdt = std::max(vdt, s.visc_dt);
+        vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
       }
     }
   }
@@ -123,11 +180,15 @@ inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::ui
 /// per 100 Pa in the DFG case at D/dp = 10; docs/VALIDATION.md). The fluid keeps the full
 /// pressures (its repulsion from the body); the two differ by that spurious force only.
 template <class Kernel, ViscosityModel Visc>
-inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
+inline RateSums body_sums(const FluidModel& model, const InteractionView& v, std::uint32_t a,
                           const NeighbourRanges& ranges, int nranges) {
+  // A local copy: the loop then reads the constants from registers; loads through the
+  // reference stay in the loop as masked loads that GCC 12 cannot vectorise.
+  const FluidModel m = model;
   const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
-  const Real cxa = v.cvx[a], cya = v.cvy[a], cza = v.cvz[a];  // the solid's own velocity
+  // the solid's own velocity
+  const Real cxa = v.continuity_vx()[a], cya = v.continuity_vy()[a], cza = v.continuity_vz()[a];
   const Real p_bg = m.eos.p_background;
   const Real rho_a = v.rho[a], press_a = v.press[a] - p_bg;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
@@ -136,7 +197,7 @@ inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::ui
     const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
                zs = za - ranges[k].shift.z;
 #pragma omp simd reduction(+ : ax, ay, az, dr) reduction(max : vdt)
-    for (std::uint32_t b = b0; b < b1; ++b) {
+    for (std::int64_t b = b0; b < std::int64_t(b1); ++b) {  // signed: a contiguous load, no gather
       const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
       const Real r2 = dx * dx + dy * dy + dz * dz;
       if (r2 < m.support2 && v.fluid[b] > Real(0)) {
@@ -148,10 +209,10 @@ inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::ui
                            v.press[b] - p_bg,
                            m.mass,
                            v.fluid[b]};
-        RateSums s;
-        fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a, nb, s);
+        const PairRates s =
+            fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a, nb);
         ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
-        vdt = std::max(vdt, s.visc_dt);
+        vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
       }
     }
   }
