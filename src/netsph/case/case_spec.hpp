@@ -261,7 +261,7 @@ struct OutputSpec {
 };
 
 struct CaseSpec {
-  std::string source;  ///< file path, or "builtin:<name>"
+  std::string source;                  ///< file path, or "builtin:<name>"
   std::vector<std::string> overrides;  ///< the --set strings applied over the file, in order
   SimulationSpec simulation;
   FluidSpec fluid;

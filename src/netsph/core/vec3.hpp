@@ -63,8 +63,10 @@ NETSPH_HD constexpr bool operator==(const Vec3<T>& a, const Vec3<T>& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
+/// By value: a reference would make the operands addressable, which keeps GCC from
+/// vectorising `omp simd` loops that call it (sph/pair_interaction.hpp).
 template <typename T>
-NETSPH_HD constexpr T dot(const Vec3<T>& a, const Vec3<T>& b) {
+NETSPH_HD constexpr T dot(Vec3<T> a, Vec3<T> b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 template <typename T>

@@ -58,9 +58,9 @@ struct PairRates {
   Real visc_dt;  ///< |h v_ab.r_ab / (r^2 + eta^2)|, 1/s (the sums keep the maximum)
 };
 
-// The pair functions take the neighbour by value, return by value and spell vectors out in
-// components: inside an `omp simd` loop any local whose address is taken (a reference
-// parameter, a Vec3 member operator) becomes a per-lane array in memory, and that stopped
+// The pair functions take the neighbour by value, return by value and use no Vec3 member
+// operators (they take `this`): inside an `omp simd` loop any local whose address is taken
+// becomes a per-lane array in memory, and that stopped
 // GCC 12 from vectorising the pair loops at all (docs/PERFORMANCE.md, "Where the time goes").
 
 /// Fluid particle a: continuity, momentum, viscosity and density diffusion from neighbour b.
@@ -69,8 +69,8 @@ NETSPH_HD PairRates fluid_pair_rates(const FluidModel& m, Real rho_a, Real press
                                      const Neighbour b) {
   const Real r = std::sqrt(b.r2);
   const Real fac = kernel_grad_factor<Kernel>(m.kernel, r);  // grad W = fac * r_ab
-  const Real dot_vr = b.vab.x * b.rab.x + b.vab.y * b.rab.y + b.vab.z * b.rab.z;
-  const Real dot_vr_c = b.vab_c.x * b.rab.x + b.vab_c.y * b.rab.y + b.vab_c.z * b.rab.z;
+  const Real dot_vr = dot(b.vab, b.rab);
+  const Real dot_vr_c = dot(b.vab_c, b.rab);
   const Real inv_r2_eta = Real(1) / (b.r2 + m.eta2);
 
   // Continuity: m_b v_ab . grad W.
@@ -94,9 +94,7 @@ NETSPH_HD PairRates fluid_pair_rates(const FluidModel& m, Real rho_a, Real press
   // Density diffusion towards fluid neighbours.
   if constexpr (Diff != DensityDiffusion::None) {
     Real drho_ab = rho_a - b.rho_b;
-    if constexpr (Diff == DensityDiffusion::Fourtakas) {
-      drho_ab -= m.hydro_grad.x * b.rab.x + m.hydro_grad.y * b.rab.y + m.hydro_grad.z * b.rab.z;
-    }
+    if constexpr (Diff == DensityDiffusion::Fourtakas) drho_ab -= dot(m.hydro_grad, b.rab);
     drho += b.fluid_b * m.delta_coef * drho_ab * fac * b.mass_b / b.rho_b;
   }
   return {{ax, ay, az}, drho, mu < Real(0) ? -mu : mu};
@@ -107,8 +105,8 @@ template <class Kernel>
 NETSPH_HD PairRates boundary_pair_rates(const FluidModel& m, const Neighbour b) {
   const Real r = std::sqrt(b.r2);
   const Real fac = kernel_grad_factor<Kernel>(m.kernel, r);
-  const Real dot_vr = b.vab.x * b.rab.x + b.vab.y * b.rab.y + b.vab.z * b.rab.z;
-  const Real dot_vr_c = b.vab_c.x * b.rab.x + b.vab_c.y * b.rab.y + b.vab_c.z * b.rab.z;
+  const Real dot_vr = dot(b.vab, b.rab);
+  const Real dot_vr_c = dot(b.vab_c, b.rab);
   const Real drho = b.fluid_b * b.mass_b * fac * dot_vr_c;
   const Real mu = m.kernel.h * dot_vr / (b.r2 + m.eta2);
   return {{Real(0), Real(0), Real(0)}, drho, (mu < Real(0) ? -mu : mu) * b.fluid_b};

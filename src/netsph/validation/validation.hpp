@@ -50,10 +50,10 @@ struct ValidationContext {
 
 struct ValidationEntry {
   std::string name;
-  std::string section;   ///< of the paper
+  std::string section;  ///< of the paper
   std::string title;
-  bool quick = false;    ///< part of --quick
-  double minutes = 0;    ///< wall time on a 2-core machine, about
+  bool quick = false;  ///< part of --quick
+  double minutes = 0;  ///< wall time on a 2-core machine, about
   std::function<std::vector<ValidationRow>(const ValidationContext&)> run;
 };
 

@@ -40,8 +40,7 @@ nlohmann::json completed_run(const std::filesystem::path& dir, const CaseSpec& s
     return nullptr;
   }
   const nlohmann::json& c = s.at("case");
-  const std::vector<std::string> overrides =
-      c.value("overrides", std::vector<std::string>{});
+  const std::vector<std::string> overrides = c.value("overrides", std::vector<std::string>{});
   if (c.value("source", "") != spec.source || overrides != spec.overrides) return nullptr;
   return s;
 }
