@@ -9,6 +9,9 @@
 #include "netsph/case/builtin_cases.hpp"
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
+#if defined(NETSPH_HAVE_CUDA)
+#include "netsph/backend/cuda/cuda_runtime_info.hpp"
+#endif
 
 namespace netsph::app {
 
@@ -50,11 +53,32 @@ int apply_threads(int threads) {
   return omp_get_max_threads();
 }
 
-std::string resolve_backend(const std::string& requested) {
-  if (requested == "cpu" || requested == "auto") return "cpu";
+namespace {
+/// Empty when a CUDA device is usable, else why not.
+std::string cuda_unavailable() {
+#if defined(NETSPH_HAVE_CUDA)
+  const cuda::RuntimeInfo info = cuda::runtime_info();
+  return info.devices > 0 ? "" : "no usable CUDA device (" + info.error + ")";
+#else
+  return "this netsph was built without CUDA (no nvcc at configure time)";
+#endif
+}
+}  // namespace
+
+std::string resolve_backend(const std::string& requested, bool command_has_cuda) {
+  if (requested == "cpu") return "cpu";
+  if (requested == "auto") return command_has_cuda && cuda_unavailable().empty() ? "cuda" : "cpu";
   if (requested == "cuda") {
-    throw Error("--backend cuda",
-                "the CUDA backend is not implemented yet (issue: CUDA backend); use --backend cpu");
+    if (!command_has_cuda) {
+      throw Error("--backend cuda",
+                  "this command does not drive the CUDA step yet: the step runs in `netsph bench "
+                  "--backend cuda` and the parity tests (fluid, fixed walls, periodic axes, "
+                  "shifting), not yet with outputs, bodies, nets or open boundaries; use "
+                  "--backend cpu");
+    }
+    if (const std::string why = cuda_unavailable(); !why.empty())
+      throw Error("--backend cuda", why + "; use --backend cpu");
+    return "cuda";
   }
   throw Error("--backend", "unknown backend '" + requested + "'; allowed: auto, cpu, cuda");
 }

@@ -101,7 +101,7 @@ int run_command(const RunArgs& args) {
     record.text["case.source"] = source;
   }
   record.text["case.overrides"] = join_lines(overrides);
-  const std::string backend = resolve_backend(args.backend);
+  const std::string backend = resolve_backend(args.backend, false);
   const int threads = apply_threads(args.threads);
   const std::filesystem::path out = restart ? std::filesystem::path(args.restart_dir)
                                     : args.out_dir.empty()

@@ -73,7 +73,9 @@ int validate_command(const ValidateArgs& args);
 /// Applies --threads (0 keeps the OpenMP default) and returns the thread count in use.
 int apply_threads(int threads);
 
-/// Checks --backend; returns the backend that will run ("cpu" until the CUDA backend lands).
-std::string resolve_backend(const std::string& requested);
+/// Checks --backend; returns the backend that will run, "cpu" or "cuda". `command_has_cuda`:
+/// whether the command can drive the CUDA step (bench can; run cannot yet). "auto" picks
+/// "cuda" there when netsph was built with CUDA and finds a usable device.
+std::string resolve_backend(const std::string& requested, bool command_has_cuda);
 
 }  // namespace netsph::app

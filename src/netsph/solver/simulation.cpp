@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "netsph/boundary/mdbc.hpp"
+#include "netsph/solver/step_settings.hpp"
 
 namespace netsph {
 
@@ -16,10 +17,7 @@ Simulation::Simulation(const CaseSpec& spec)
       scene_(build_scene(spec_)),
       p_(scene_.particles) {
   const FluidModel& m = scene_.model;
-  // A 5% skin costs 16% more candidates in 3D but lets one sort serve both stages; the
-  // half-step displacement is at most CFL h v/(2 c0) ~ 0.01 h, so re-sorts are rare.
-  constexpr double kSkin = 0.05;
-  grid_.configure(scene_.domain_min, scene_.domain_max, m.support, kSkin, m.dims,
+  grid_.configure(scene_.domain_min, scene_.domain_max, m.support, kGridSkin, m.dims,
                   spec.domain.periodic);
   walls_.resize(spec_.walls.size());
   for (std::size_t w = 0; w < spec.walls.size(); ++w) {
@@ -27,13 +25,7 @@ Simulation::Simulation(const CaseSpec& spec)
         spec.walls[w].model == WallModel::Dbc || spec.walls[w].slip == WallSlip::WallVelocity;
   }
   shift_on_ = spec.fluid.shifting == ShiftingModel::Fickian;
-  shift_params_.coefficient = static_cast<Real>(spec.fluid.shifting_coefficient);
-  shift_params_.h = m.kernel.h;
-  shift_params_.threshold = static_cast<Real>(spec.fluid.shifting_surface_threshold > 0
-                                                  ? spec.fluid.shifting_surface_threshold
-                                                  : default_shifting_threshold(m.dims));
-  shift_params_.dims = static_cast<Real>(m.dims);
-  shift_params_.max_component = static_cast<Real>(0.1 * spec.simulation.dp);
+  shift_params_ = shifting_params(spec, m);
   contact_model_ = ContactModel::make(spec.simulation.dp, scene_.sound_speed);
   initial_fluid_ = p_.count(ParticleKind::Fluid);
   // Knots carry their weight and buoyancy in the knot-spring solver (constant forces), not as

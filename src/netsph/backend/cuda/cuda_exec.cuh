@@ -1,0 +1,139 @@
+#pragma once
+// The CUDA executor of the device-shaped step (backend/device/device_stepper.hpp): device
+// buffers, one thread per particle, CUB's radix sort and reductions. Every call runs on the
+// default stream in order; the reductions copy their result back and so synchronise.
+#include <cuda_runtime.h>
+
+#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_reduce.cuh>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+
+#include "netsph/core/error.hpp"
+
+namespace netsph {
+
+inline void cuda_check(cudaError_t err, const char* what) {
+  if (err != cudaSuccess) throw Error("cuda", std::string(what) + ": " + cudaGetErrorString(err));
+}
+
+template <class F>
+__global__ void for_each_kernel(std::uint32_t n, F f) {
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < n) f(i);
+}
+
+__global__ inline void count_below_kernel(const std::uint32_t* keys, std::uint32_t n,
+                                          std::uint32_t bound, std::uint32_t* out) {
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < n && keys[i] < bound && (i + 1 == n || keys[i + 1] >= bound)) *out = i + 1;
+}
+
+/// A device array with the part of std::vector's interface the step uses.
+template <class T>
+class DeviceBuffer {
+ public:
+  DeviceBuffer() = default;
+  DeviceBuffer(const DeviceBuffer&) = delete;
+  DeviceBuffer& operator=(const DeviceBuffer&) = delete;
+  ~DeviceBuffer() { cudaFree(p_); }
+  void resize(std::size_t n) {
+    if (n > cap_) {
+      T* q = nullptr;
+      cuda_check(cudaMalloc(&q, n * sizeof(T)), "cudaMalloc");
+      if (size_ > 0)
+        cuda_check(cudaMemcpy(q, p_, size_ * sizeof(T), cudaMemcpyDeviceToDevice), "resize");
+      cudaFree(p_);
+      p_ = q, cap_ = n;
+    }
+    size_ = n;
+  }
+  void swap(DeviceBuffer& o) noexcept {
+    std::swap(p_, o.p_), std::swap(size_, o.size_), std::swap(cap_, o.cap_);
+  }
+  T* data() { return p_; }
+  const T* data() const { return p_; }
+  std::size_t size() const { return size_; }
+
+ private:
+  T* p_ = nullptr;
+  std::size_t size_ = 0, cap_ = 0;
+};
+
+struct CudaExec {
+  template <class T>
+  using Buffer = DeviceBuffer<T>;
+  static constexpr unsigned kBlock = 256;
+
+  template <class F>
+  static void for_each(std::size_t n, F f) {
+    if (n == 0) return;
+    const auto blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
+    for_each_kernel<<<blocks, kBlock>>>(static_cast<std::uint32_t>(n), f);
+    cuda_check(cudaGetLastError(), "kernel launch");
+  }
+
+  static DeviceBuffer<unsigned char>& temp(std::size_t bytes) {
+    static DeviceBuffer<unsigned char> t;
+    t.resize(bytes > 0 ? bytes : 1);
+    return t;
+  }
+
+  static void sort_pairs(const std::uint32_t* keys_in, std::uint32_t* keys_out,
+                         const std::uint32_t* vals_in, std::uint32_t* vals_out, std::size_t n,
+                         int key_bits) {
+    std::size_t bytes = 0;
+    const int count = static_cast<int>(n);
+    cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keys_in, keys_out, vals_in, vals_out,
+                                               count, 0, key_bits),
+               "radix sort (size)");
+    cuda_check(cub::DeviceRadixSort::SortPairs(temp(bytes).data(), bytes, keys_in, keys_out,
+                                               vals_in, vals_out, count, 0, key_bits),
+               "radix sort");
+  }
+
+  template <class T>
+  static T max_of(const T* x, std::size_t n) {
+    if (n == 0) return T(0);
+    static DeviceBuffer<T> out;
+    out.resize(1);
+    std::size_t bytes = 0;
+    const int count = static_cast<int>(n);
+    cuda_check(cub::DeviceReduce::Max(nullptr, bytes, x, out.data(), count), "max (size)");
+    cuda_check(cub::DeviceReduce::Max(temp(bytes).data(), bytes, x, out.data(), count), "max");
+    T h{};
+    cuda_check(cudaMemcpy(&h, out.data(), sizeof(T), cudaMemcpyDeviceToHost), "max (copy)");
+    return h > T(0) ? h : T(0);
+  }
+
+  static std::size_t count_below(const std::uint32_t* keys, std::size_t n, std::uint32_t bound) {
+    static DeviceBuffer<std::uint32_t> out;
+    out.resize(1);
+    cuda_check(cudaMemset(out.data(), 0, sizeof(std::uint32_t)), "count (reset)");
+    if (n > 0) {
+      const auto blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
+      count_below_kernel<<<blocks, kBlock>>>(keys, static_cast<std::uint32_t>(n), bound,
+                                             out.data());
+      cuda_check(cudaGetLastError(), "count launch");
+    }
+    std::uint32_t h = 0;
+    cuda_check(cudaMemcpy(&h, out.data(), sizeof(h), cudaMemcpyDeviceToHost), "count (copy)");
+    return h;
+  }
+
+  template <class T>
+  static void upload(DeviceBuffer<T>& b, const T* src, std::size_t n) {
+    b.resize(n);
+    if (n > 0)
+      cuda_check(cudaMemcpy(b.data(), src, n * sizeof(T), cudaMemcpyHostToDevice), "upload");
+  }
+  template <class T>
+  static void download(T* dst, const DeviceBuffer<T>& b, std::size_t n) {
+    if (n > 0)
+      cuda_check(cudaMemcpy(dst, b.data(), n * sizeof(T), cudaMemcpyDeviceToHost), "download");
+  }
+};
+
+}  // namespace netsph

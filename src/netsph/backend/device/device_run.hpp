@@ -1,0 +1,46 @@
+#pragma once
+// A device-shaped run behind a plain interface, so that code compiled by the host compiler
+// (the solver, the command line, tests) drives the CUDA instantiation without seeing CUDA.
+#include <memory>
+
+#include "netsph/backend/device/device_stepper.hpp"
+
+namespace netsph {
+
+class DeviceRun {
+ public:
+  virtual ~DeviceRun() = default;
+  virtual DeviceStepReport step() = 0;
+  /// The particles as of the last step (sorted by cell).
+  virtual void download(ParticleSet& p) const = 0;
+  virtual double time() const = 0;
+  virtual std::int64_t steps() const = 0;
+  virtual std::size_t size() const = 0;
+  virtual double bytes_per_particle() const = 0;
+};
+
+template <class Exec>
+class DeviceRunOn final : public DeviceRun {
+ public:
+  DeviceRunOn(DeviceSetup setup, const ParticleSet& p) : s_(std::move(setup), p) {}
+  DeviceStepReport step() override { return s_.step(); }
+  void download(ParticleSet& p) const override { s_.download(p); }
+  double time() const override { return s_.time(); }
+  std::int64_t steps() const override { return s_.steps(); }
+  std::size_t size() const override { return s_.size(); }
+  double bytes_per_particle() const override { return s_.bytes_per_particle(); }
+
+ private:
+  DeviceStepper<Exec> s_;
+};
+
+/// The device step's logic on the host (backend/device/device_run_host.cpp).
+std::unique_ptr<DeviceRun> make_host_device_run(DeviceSetup setup, const ParticleSet& p);
+
+#if defined(NETSPH_HAVE_CUDA)
+/// On the first CUDA device (backend/cuda/device_run_cuda.cu). Throws netsph::Error when
+/// there is no usable device.
+std::unique_ptr<DeviceRun> make_cuda_device_run(DeviceSetup setup, const ParticleSet& p);
+#endif
+
+}  // namespace netsph

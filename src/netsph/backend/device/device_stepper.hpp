@@ -1,0 +1,368 @@
+#pragma once
+// The time step with every particle array resident on one executor: the CUDA device
+// (backend/cuda/cuda_exec.cuh) or, for tests without a GPU, the host (host_exec.hpp). The
+// sequence is Simulation::step's (solver/simulation.hpp) for the cases this version supports:
+//
+//   wrap periodic axes; sort by cell key (radix sort of keys, gather of every array);
+//   cell ranges; mDBC wall state; view -> rates -> dt (max reductions); save the start;
+//   predictor [re-sort if a particle moved past the grid skin]; view -> rates (+ shifting)
+//   -> corrector; non-finite check.
+//
+// Supported: fluid particles, fixed walls (DBC or mDBC, any slip), periodic axes, shifting,
+// both kernels, both viscosity models, every density diffusion. Not yet: open boundaries,
+// moving walls, bodies, nets and probes; DeviceSetup refuses a case that has them (the caller
+// turns that into a message naming what to use instead).
+//
+// Exec provides: Buffer<T> (resize, size, data), for_each(n, f), sort_pairs(keys_in, keys_out,
+// vals_in, vals_out, n, key_bits), max_of(const Real*, n), max_of(const double*, n),
+// count_below(const uint32*, n, bound), upload(Buffer<T>&, const T*, n), download(T*, const
+// Buffer<T>&, n). f must be a NETSPH_LAMBDA: it runs on the device.
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "netsph/backend/device/device_grid.hpp"
+#include "netsph/backend/device/device_kernels.hpp"
+#include "netsph/sph/time_step.hpp"
+
+#if defined(__CUDACC__)
+#define NETSPH_LAMBDA __host__ __device__
+#else
+#define NETSPH_LAMBDA
+#endif
+
+namespace netsph {
+
+/// What a device step needs from the case (solver/device_setup.cpp builds it).
+struct DeviceSetup {
+  FluidModel model;
+  DeviceGrid grid;
+  double max_displacement = 0;  ///< CellGrid::max_displacement()
+  double cfl = 0.2;
+  double dt_max = 0;  ///< 0: none
+  double dt_min = 0;  ///< 0: 1e-4 of the first dt
+  bool shifting = false;
+  ShiftingParams shift_params;
+  std::vector<DeviceWall> walls;  ///< by wall index
+};
+
+/// Why a step stopped early.
+enum class DeviceStepStatus { Ok, DtCollapsed, NonFinite };
+
+struct DeviceStepReport {
+  DeviceStepStatus status = DeviceStepStatus::Ok;
+  TimeStepLimits dt_limits;
+  double dt_floor = 0;
+  std::size_t lost = 0;  ///< particles dropped this step for leaving the grid
+  bool resorted = false;
+};
+
+template <class Exec>
+class DeviceStepper {
+ public:
+  template <class T>
+  using Buffer = typename Exec::template Buffer<T>;
+
+  DeviceStepper(DeviceSetup setup, const ParticleSet& p) : s_(std::move(setup)) {
+    n_ = p.size();
+    next_id_ = p.next_id;
+    for (const DeviceWall& w : s_.walls) mirrors_ |= !w.shows_own_velocity;
+    alloc(n_);
+    Exec::upload(pos_, p.pos.data(), n_);
+    Exec::upload(vel_, p.vel.data(), n_);
+    Exec::upload(rho_, p.rho.data(), n_);
+    Exec::upload(kind_, p.kind.data(), n_);
+    Exec::upload(id_, p.id.data(), n_);
+    Exec::upload(group_, p.group.data(), n_);
+    Exec::upload(ghost_, p.ghost.data(), n_);
+    Exec::upload(walls_, s_.walls.data(), s_.walls.size());
+  }
+
+  /// Advances one symplectic step; the report says whether it completed.
+  DeviceStepReport step() {
+    DeviceStepReport rep;
+    const std::size_t before = n_;
+    sort(false);
+    rep.lost = before - n_;
+    mdbc();
+    view();
+    rates(false);
+    const TimeStepInputs in{std::sqrt(static_cast<double>(Exec::max_of(acc2_.data(), n_))),
+                            static_cast<double>(Exec::max_of(visc_.data(), n_))};
+    rep.dt_limits = compute_time_step(s_.model, s_.cfl, in);
+    double dt = rep.dt_limits.dt;
+    if (s_.dt_max > 0) dt = dt < s_.dt_max ? dt : s_.dt_max;
+    if (steps_ == 0) dt_floor_ = s_.dt_min > 0 ? s_.dt_min : 1e-4 * dt;
+    rep.dt_floor = dt_floor_;
+    rep.dt_limits.dt = dt;
+    if (!(dt >= dt_floor_)) {
+      rep.status = DeviceStepStatus::DtCollapsed;
+      return rep;
+    }
+    save_start();
+    const double moved = predict(dt);
+    if (moved > s_.max_displacement) {
+      sort(true);
+      rep.resorted = true;
+    }
+    view();
+    rates(s_.shifting);
+    if (!correct(dt)) rep.status = DeviceStepStatus::NonFinite;
+    time_ += dt;
+    ++steps_;
+    return rep;
+  }
+
+  /// Copies the particles back (sorted by cell as of the last step).
+  void download(ParticleSet& p) const {
+    p.pos.resize(n_), p.vel.resize(n_), p.rho.resize(n_), p.kind.resize(n_), p.id.resize(n_);
+    p.group.resize(n_), p.ghost.resize(n_);
+    Exec::download(p.pos.data(), pos_, n_);
+    Exec::download(p.vel.data(), vel_, n_);
+    Exec::download(p.rho.data(), rho_, n_);
+    Exec::download(p.kind.data(), kind_, n_);
+    Exec::download(p.id.data(), id_, n_);
+    Exec::download(p.group.data(), group_, n_);
+    Exec::download(p.ghost.data(), ghost_, n_);
+    p.next_id = next_id_;
+  }
+
+  double time() const { return time_; }
+  std::int64_t steps() const { return steps_; }
+  std::size_t size() const { return n_; }
+  /// Bytes the executor holds per particle (all buffers, capacity, and the cell table).
+  double bytes_per_particle() const {
+    const std::size_t per =
+        2 * (sizeof(Vec3d) + sizeof(Vec3f) + sizeof(Real) + sizeof(ParticleKind) +
+             2 * sizeof(std::uint32_t) + sizeof(Vec3f)) +  // state + gather scratch
+        sizeof(Vec3d) +
+        sizeof(Vec3f) + sizeof(Real) +                      // step start
+        (mirrors_ ? 12 : 9) * sizeof(Real) +                // view
+        sizeof(Vec3f) + 3 * sizeof(Real) +                  // rates
+        (s_.shifting ? sizeof(Vec3f) + sizeof(Real) : 0) +  // shifting sums
+        4 * sizeof(std::uint32_t) + sizeof(double);         // keys, order, moved
+    return static_cast<double>(per) +
+           static_cast<double>(cell_begin_.size() * sizeof(std::uint32_t)) /
+               static_cast<double>(n_ > 0 ? n_ : 1);
+  }
+
+  // The phases of a step, public only because CUDA's device lambdas cannot live in private
+  // member functions.
+
+  void alloc(std::size_t n) {
+    pos_.resize(n), vel_.resize(n), rho_.resize(n), kind_.resize(n), id_.resize(n);
+    group_.resize(n), ghost_.resize(n);
+    pos2_.resize(n), vel2_.resize(n), rho2_.resize(n), kind2_.resize(n), id2_.resize(n);
+    group2_.resize(n), ghost2_.resize(n);
+    spos_.resize(n), svel_.resize(n), srho_.resize(n);
+    for (auto* b : {&vx_, &vy_, &vz_, &x_, &y_, &z_, &vrho_, &press_, &fluid_}) b->resize(n);
+    if (mirrors_) cvx_.resize(n), cvy_.resize(n), cvz_.resize(n);
+    acc_.resize(n), drho_.resize(n), acc2_.resize(n), visc_.resize(n);
+    if (s_.shifting) grad_c_.resize(n), div_r_.resize(n);
+    keys_.resize(n), keys2_.resize(n), order_.resize(n), order2_.resize(n), moved_.resize(n);
+    cell_begin_.resize(static_cast<std::size_t>(s_.grid.cells()) + 2);
+  }
+
+  DeviceState state() {
+    return {pos_.data(), vel_.data(),   rho_.data(),  kind_.data(),
+            id_.data(),  group_.data(), ghost_.data()};
+  }
+  DeviceStart start() { return {spos_.data(), svel_.data(), srho_.data()}; }
+  DeviceView view_arrays() {
+    DeviceView v{x_.data(),  y_.data(),  z_.data(),  vx_.data(),   vy_.data(),    vz_.data(),
+                 vx_.data(), vy_.data(), vz_.data(), vrho_.data(), press_.data(), fluid_.data()};
+    if (mirrors_) v.cvx = cvx_.data(), v.cvy = cvy_.data(), v.cvz = cvz_.data();
+    return v;
+  }
+  DeviceRates rate_arrays() {
+    return {acc_.data(),
+            drho_.data(),
+            acc2_.data(),
+            visc_.data(),
+            s_.shifting ? grad_c_.data() : nullptr,
+            s_.shifting ? div_r_.data() : nullptr};
+  }
+
+  /// Wraps periodic axes, sorts every array by cell and rebuilds the cell table; drops the
+  /// particles outside the grid. Mid-step (after the predictor) the step-start arrays move too.
+  void sort(bool mid_step) {
+    const DeviceGrid g = s_.grid;
+    const DeviceState st = state();
+    const DeviceStart ss = start();
+    std::uint32_t* keys = keys_.data();
+    std::uint32_t* order = order_.data();
+    const bool periodic = g.periodic[0] || g.periodic[1] || g.periodic[2];
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      if (periodic) {
+        const Vec3d q = g.wrapped(st.pos[i]);
+        if (mid_step) ss.pos[i] += q - st.pos[i];
+        st.pos[i] = q;
+      }
+      keys[i] = g.key_of(st.pos[i]);
+      order[i] = i;
+    });
+    int bits = 1;
+    while ((std::uint64_t{1} << bits) <= g.sentinel()) ++bits;
+    Exec::sort_pairs(keys_.data(), keys2_.data(), order_.data(), order2_.data(), n_, bits);
+    keys_.swap(keys2_);  // the sorted keys and order are now in keys_ and order2_
+    const std::size_t kept = Exec::count_below(keys_.data(), n_, g.sentinel());
+    gather(pos_, pos2_, kept), gather(vel_, vel2_, kept), gather(rho_, rho2_, kept);
+    gather(kind_, kind2_, kept), gather(id_, id2_, kept), gather(group_, group2_, kept);
+    gather(ghost_, ghost2_, kept);
+    if (mid_step)
+      gather(spos_, pos2_, kept), gather(svel_, vel2_, kept), gather(srho_, rho2_, kept);
+    n_ = kept;
+    // cell_begin[c] = first sorted index with key >= c, for c in [0, cells + 1].
+    std::uint32_t* begin = cell_begin_.data();
+    const std::uint32_t* k = keys_.data();
+    const std::uint32_t n = static_cast<std::uint32_t>(n_);
+    const std::uint32_t last = g.sentinel() + 1;
+    Exec::for_each(n_ + 1, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      const std::uint32_t lo = i == 0 ? 0 : k[i - 1] + 1;
+      const std::uint32_t hi = i == n ? last : k[i];
+      for (std::uint32_t c = lo; c <= hi; ++c) begin[c] = i;
+    });
+  }
+
+  /// v = v[order] for the first `kept` sorted slots, through `scratch`.
+  template <class T>
+  void gather(Buffer<T>& v, Buffer<T>& scratch, std::size_t kept) {
+    const T* src = v.data();
+    T* dst = scratch.data();
+    const std::uint32_t* order = order2_.data();
+    Exec::for_each(kept, [=] NETSPH_LAMBDA(std::uint32_t i) { dst[i] = src[order[i]]; });
+    v.swap(scratch);
+  }
+
+  // Kernel types are dispatched by hand, not with with_kernel: CUDA's device lambdas cannot be
+  // defined inside a generic lambda.
+  void mdbc() {
+    if (s_.model.kernel_type == KernelType::Wendland) return mdbc_for<WendlandC2>();
+    mdbc_for<CubicSpline>();
+  }
+
+  template <class K>
+  void mdbc_for() {
+    const DeviceGrid g = s_.grid;
+    const std::uint32_t* begin = cell_begin_.data();
+    const DeviceState st = state();
+    const DeviceWall* walls = walls_.data();
+    const FluidModel m = s_.model;
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      device_mdbc_particle<K>(g, begin, st, walls, m, i);
+    });
+  }
+
+  void view() {
+    const DeviceState st = state();
+    const DeviceView v = view_arrays();
+    const FluidModel m = s_.model;
+    const DeviceWall* walls = walls_.data();
+    const Vec3d origin = s_.grid.origin;
+    const bool mirrors = mirrors_;
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      device_view_particle(st, v, m, walls, origin, i, mirrors);
+    });
+  }
+
+  void rates(bool shift) {
+    if (s_.model.kernel_type == KernelType::Wendland) return rates_kernel<WendlandC2>(shift);
+    rates_kernel<CubicSpline>(shift);
+  }
+
+  template <class K>
+  void rates_kernel(bool shift) {
+    if (s_.model.viscosity == ViscosityModel::Laminar)
+      return rates_for<K, ViscosityModel::Laminar>(shift);
+    rates_for<K, ViscosityModel::Artificial>(shift);
+  }
+
+  template <class K, ViscosityModel Visc>
+  void rates_for(bool shift) {
+    switch (s_.model.diffusion) {
+      case DensityDiffusion::None:
+        return shift ? rates_launch<K, Visc, DensityDiffusion::None, true>()
+                     : rates_launch<K, Visc, DensityDiffusion::None, false>();
+      case DensityDiffusion::Molteni:
+        return shift ? rates_launch<K, Visc, DensityDiffusion::Molteni, true>()
+                     : rates_launch<K, Visc, DensityDiffusion::Molteni, false>();
+      case DensityDiffusion::Fourtakas:
+        return shift ? rates_launch<K, Visc, DensityDiffusion::Fourtakas, true>()
+                     : rates_launch<K, Visc, DensityDiffusion::Fourtakas, false>();
+    }
+  }
+
+  template <class K, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
+  void rates_launch() {
+    const DeviceGrid g = s_.grid;
+    const std::uint32_t* begin = cell_begin_.data();
+    const std::uint32_t* keys = keys_.data();
+    const ParticleKind* kind = kind_.data();
+    const DeviceView v = view_arrays();
+    const FluidModel m = s_.model;
+    const DeviceRates out = rate_arrays();
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
+      device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a);
+    });
+  }
+
+  void save_start() {
+    const DeviceState st = state();
+    const DeviceStart ss = start();
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      ss.pos[i] = st.pos[i], ss.vel[i] = st.vel[i], ss.rho[i] = st.rho[i];
+    });
+  }
+
+  /// Predictor; returns the largest displacement, m.
+  double predict(double dt) {
+    const DeviceState st = state();
+    const DeviceStart ss = start();
+    const DeviceRates r = rate_arrays();
+    const DeviceWall* walls = walls_.data();
+    const FluidModel m = s_.model;
+    double* moved = moved_.data();
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      moved[i] = device_predict_particle(st, ss, r, walls, m, dt, i);
+    });
+    return std::sqrt(Exec::max_of(moved_.data(), n_));
+  }
+
+  /// Corrector; returns false when a particle's state is not finite.
+  bool correct(double dt) {
+    const DeviceState st = state();
+    const DeviceStart ss = start();
+    const DeviceRates r = rate_arrays();
+    const DeviceWall* walls = walls_.data();
+    const FluidModel m = s_.model;
+    const bool shift = s_.shifting;
+    const ShiftingParams sp = s_.shift_params;
+    double* bad = moved_.data();  // reused: 1 where the state is not finite
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      bad[i] =
+          device_correct_particle(st, ss, r, walls, m, shift ? &sp : nullptr, dt, i) ? 0.0 : 1.0;
+    });
+    return !(Exec::max_of(moved_.data(), n_) > 0);
+  }
+
+ private:
+  DeviceSetup s_;
+  std::size_t n_ = 0;
+  std::uint32_t next_id_ = 0;
+  bool mirrors_ = false;
+  double time_ = 0;
+  std::int64_t steps_ = 0;
+  double dt_floor_ = 0;
+  Buffer<Vec3d> pos_, pos2_, spos_;
+  Buffer<Vec3f> vel_, vel2_, svel_, ghost_, ghost2_, acc_, grad_c_;
+  Buffer<Real> rho_, rho2_, srho_, x_, y_, z_, vx_, vy_, vz_, cvx_, cvy_, cvz_, vrho_, press_,
+      fluid_, drho_, acc2_, visc_, div_r_;
+  Buffer<ParticleKind> kind_, kind2_;
+  Buffer<std::uint32_t> id_, id2_, group_, group2_, keys_, keys2_, order_, order2_, cell_begin_;
+  Buffer<double> moved_;
+  Buffer<DeviceWall> walls_;
+};
+
+}  // namespace netsph

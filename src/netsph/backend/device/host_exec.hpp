@@ -1,0 +1,60 @@
+#pragma once
+// The host executor of the device-shaped step (device_stepper.hpp): buffers are std::vectors,
+// for_each an OpenMP loop, the sort a stable sort by key. It runs the device kernels' logic on
+// the CPU, so that tests check it against the CPU backend where there is no GPU; it is not a
+// fast path (the CPU backend is: backend/cpu/).
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "netsph/core/real.hpp"
+
+namespace netsph {
+
+struct HostExec {
+  template <class T>
+  using Buffer = std::vector<T>;
+
+  template <class F>
+  static void for_each(std::size_t n, F f) {
+    const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::uint32_t>(i));
+  }
+
+  /// Stable sort of (key, value) pairs by key, as cub::DeviceRadixSort::SortPairs.
+  static void sort_pairs(const std::uint32_t* keys_in, std::uint32_t* keys_out,
+                         const std::uint32_t* vals_in, std::uint32_t* vals_out, std::size_t n,
+                         int /*key_bits*/) {
+    std::vector<std::uint32_t> idx(n);
+    std::iota(idx.begin(), idx.end(), 0u);
+    std::stable_sort(idx.begin(), idx.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return keys_in[a] < keys_in[b]; });
+    for (std::size_t i = 0; i < n; ++i)
+      keys_out[i] = keys_in[idx[i]], vals_out[i] = vals_in[idx[i]];
+  }
+
+  template <class T>
+  static T max_of(const T* x, std::size_t n) {
+    T m = 0;
+    for (std::size_t i = 0; i < n; ++i) m = x[i] > m ? x[i] : m;
+    return m;
+  }
+
+  /// How many of the sorted keys are below `bound`.
+  static std::size_t count_below(const std::uint32_t* keys, std::size_t n, std::uint32_t bound) {
+    return static_cast<std::size_t>(std::lower_bound(keys, keys + n, bound) - keys);
+  }
+
+  template <class T>
+  static void upload(Buffer<T>& b, const T* src, std::size_t n) {
+    b.assign(src, src + n);
+  }
+  template <class T>
+  static void download(T* dst, const Buffer<T>& b, std::size_t n) {
+    std::copy(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n), dst);
+  }
+};
+
+}  // namespace netsph
