@@ -23,15 +23,23 @@ namespace netsph {
 namespace {
 
 struct Difference {
-  double pos = 0;  ///< largest position difference, in dp
-  double vel = 0;  ///< largest velocity difference over the largest speed
-  double rho = 0;  ///< largest relative density difference
-  double dt = 0;   ///< largest relative dt difference over the steps
+  double pos = 0;         ///< largest position difference, in dp
+  double vel = 0;         ///< largest velocity difference over the largest speed
+  double rho = 0;         ///< largest relative density difference
+  double dt = 0;          ///< largest relative dt difference over the steps
+  double body_pos = 0;    ///< largest body centre difference, in dp
+  double body_force = 0;  ///< largest body fluid-force difference over the largest force
 };
+
+CaseSpec load(const std::string& name, const std::vector<std::string>& overrides) {
+  if (name.rfind("good/", 0) == 0)
+    return read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/" + name, overrides);
+  return test::load_case(name, overrides);
+}
 
 Difference compare(const std::string& name, const std::vector<std::string>& overrides, int steps,
                    DeviceExecutor exec) {
-  const CaseSpec spec = test::load_case(name, overrides);
+  const CaseSpec spec = load(name, overrides);
   Simulation cpu(spec);
   const std::unique_ptr<DeviceRun> dev = make_device_run(spec, exec);
   Difference d;
@@ -63,6 +71,16 @@ Difference compare(const std::string& name, const std::vector<std::string>& over
     d.vel = std::max(d.vel, static_cast<double>(norm(p.vel[i] - q.vel[j])) / vmax);
     d.rho = std::max(d.rho, std::fabs(static_cast<double>(p.rho[i] - q.rho[j])) / p.rho[i]);
   }
+  const auto& bodies = cpu.bodies();
+  EXPECT_EQ(bodies.size(), dev->body_states().size());
+  double fmax = 1e-12;
+  for (const RigidBody& b : bodies) fmax = std::max(fmax, norm(b.fluid_force));
+  for (std::size_t b = 0; b < bodies.size() && b < dev->body_states().size(); ++b) {
+    d.body_pos = std::max(d.body_pos, norm(bodies[b].state.com - dev->body_states()[b].com) / dp);
+    const double* f = dev->body_loads()[b].f;
+    d.body_force =
+        std::max(d.body_force, norm(bodies[b].fluid_force - Vec3d(f[0], f[1], f[2])) / fmax);
+  }
   return d;
 }
 
@@ -71,12 +89,14 @@ Difference compare(const std::string& name, const std::vector<std::string>& over
 void expect_parity(const Difference& d) {
   std::printf(
       "largest differences: position %.3g dp, velocity %.3g of the top speed, density "
-      "%.3g, dt %.3g\n",
-      d.pos, d.vel, d.rho, d.dt);
+      "%.3g, dt %.3g, body centre %.3g dp, body force %.3g of the largest\n",
+      d.pos, d.vel, d.rho, d.dt, d.body_pos, d.body_force);
   EXPECT_LT(d.pos, 1e-4) << "largest position difference, dp";
   EXPECT_LT(d.vel, 1e-3) << "largest velocity difference over the largest speed";
   EXPECT_LT(d.rho, 1e-5) << "largest relative density difference";
   EXPECT_LT(d.dt, 1e-4) << "largest relative time-step difference";
+  EXPECT_LT(d.body_pos, 1e-4) << "largest body centre difference, dp";
+  EXPECT_LT(d.body_force, 1e-3) << "largest body force difference over the largest force";
 }
 
 // DBC walls, Wendland kernel, Fourtakas diffusion, artificial viscosity, a free surface.
@@ -98,6 +118,38 @@ TEST(DeviceParity, HostPoiseuilleMatchesTheCpuBackend) {
 
 TEST(DeviceParity, HostDamBreak3DWithMdbcAndShiftingMatchesTheCpuBackend) {
   expect_parity(compare("dambreak3d.toml", kDamBreak3D, 40, DeviceExecutor::Host));
+}
+
+// A wall moving at constant speed, periodic x, mDBC no-slip mirrors.
+const std::vector<std::string> kCouette = {};
+// A floating mDBC box (6 degrees of freedom reduced to 3 in 2D), heaving.
+const std::vector<std::string> kFloatingBox = {"simulation.dp=0.04"};
+// A dense box resting on the floor from the start: body-wall contact forces.
+const std::vector<std::string> kBoxOnFloor = {"simulation.dp=0.02",
+                                              "body.0.center=[0.5, 0.0, 0.049]"};
+// A fixed thin plate hit by a dam-break surge.
+const std::vector<std::string> kThinPlate = {};
+
+TEST(DeviceParity, HostCouetteWithAMovingWallMatchesTheCpuBackend) {
+  expect_parity(compare("couette2d.toml", kCouette, 200, DeviceExecutor::Host));
+}
+
+TEST(DeviceParity, HostFloatingBoxMatchesTheCpuBackend) {
+  expect_parity(compare("floating_box2d.toml", kFloatingBox, 200, DeviceExecutor::Host));
+}
+
+TEST(DeviceParity, HostBoxOnTheFloorWithContactsMatchesTheCpuBackend) {
+  expect_parity(compare("sinking_box2d.toml", kBoxOnFloor, 200, DeviceExecutor::Host));
+}
+
+TEST(DeviceParity, HostFixedThinPlateMatchesTheCpuBackend) {
+  expect_parity(compare("thin_plate_leak2d.toml", kThinPlate, 100, DeviceExecutor::Host));
+}
+
+// A coupled net: a knot tethered by one twine in a periodic duct, shifting on (the bodies and
+// the knot-spring solver on the host, their particles on the device).
+TEST(DeviceParity, HostCoupledNetMatchesTheCpuBackend) {
+  expect_parity(compare("good/device_tethered_knot.toml", {}, 40, DeviceExecutor::Host));
 }
 
 TEST(DeviceParity, UnsupportedCaseIsRefusedWithTheFeatureNamed) {
@@ -139,6 +191,26 @@ TEST(DeviceParity, CudaPoiseuilleMatchesTheCpuBackend) {
 TEST(DeviceParity, CudaDamBreak3DWithMdbcAndShiftingMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
   expect_parity(compare("dambreak3d.toml", kDamBreak3D, 40, DeviceExecutor::Cuda));
+}
+
+TEST(DeviceParity, CudaCouetteWithAMovingWallMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("couette2d.toml", kCouette, 200, DeviceExecutor::Cuda));
+}
+
+TEST(DeviceParity, CudaFloatingBoxMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("floating_box2d.toml", kFloatingBox, 200, DeviceExecutor::Cuda));
+}
+
+TEST(DeviceParity, CudaCoupledNetMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("good/device_tethered_knot.toml", {}, 40, DeviceExecutor::Cuda));
+}
+
+TEST(DeviceParity, CudaBoxOnTheFloorWithContactsMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("sinking_box2d.toml", kBoxOnFloor, 200, DeviceExecutor::Cuda));
 }
 
 }  // namespace

@@ -9,9 +9,10 @@
 
 namespace netsph {
 
-/// The device step's constants for a case whose scene is `scene`. Throws netsph::Error naming
-/// the first feature of the case the device step does not support yet (open boundaries,
-/// bodies, nets, probes, moving walls).
+/// The device step's constants for a case whose scene is `scene` (the case with its nets'
+/// knots as bodies: spec_with_net_knots). Throws netsph::Error naming the first feature of
+/// the case the device step does not support yet (open boundaries). Probes are ignored: a
+/// device run writes no outputs yet.
 DeviceSetup device_setup(const CaseSpec& spec, const Scene& scene);
 
 enum class DeviceExecutor { Host, Cuda };

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "netsph/boundary/mdbc.hpp"
+#include "netsph/solver/body_motion.hpp"
 #include "netsph/solver/step_settings.hpp"
 
 namespace netsph {
@@ -106,34 +107,7 @@ void Simulation::reduce_body_forces() {
 }
 
 void Simulation::advance_bodies(bool corrector, double dt) {
-  const Vec3d g = spec_.fluid.gravity;
-  for (std::size_t bi = 0; bi < scene_.bodies.size(); ++bi) {
-    RigidBody& b = scene_.bodies[bi];
-    if (!corrector) b.start = b.state;
-    switch (b.motion) {
-      case BodyMotion::Fixed:
-        break;
-      case BodyMotion::Prescribed: {
-        // As the fluid: half step with the start velocity, full step by the trapezoid rule
-        // (exact for a velocity linear in time over the step).
-        const VelocityHistory& v = spec_.bodies[bi].velocity;
-        const Vec3d v0 = v.at(time_), v1 = v.at(time_ + (corrector ? dt : 0.5 * dt));
-        b.state.com =
-            corrector ? b.start.com + (v0 + v1) * (0.5 * dt) : b.start.com + v0 * (0.5 * dt);
-        b.state.vel = v1;
-        break;
-      }
-      case BodyMotion::Floating: {
-        const Vec3d force = b.fluid_force + b.contact_force + b.external_force;
-        const Vec3d torque = b.fluid_torque + b.contact_torque + b.external_torque;
-        const RigidAcceleration a = rigid_acceleration(b.inertia, b.state, force, torque, g);
-        b.state = corrector ? rigid_correct(b.start, a, dt) : rigid_predict(b.start, a, dt);
-        break;
-      }
-    }
-  }
-  // Net knots: translation by the twines and the fluid, sub-cycled over the stage.
-  if (!nets_.empty()) advance_coupled_nets(nets_, scene_.bodies, corrector ? dt : 0.5 * dt);
+  netsph::advance_bodies(spec_, scene_.bodies, nets_, time_, corrector, dt);
 }
 
 void Simulation::sort_particles(bool mid_step) {

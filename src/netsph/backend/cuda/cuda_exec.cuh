@@ -108,6 +108,8 @@ struct CudaExec {
     return h > T(0) ? h : T(0);
   }
 
+  __device__ static void atomic_add(double* p, double v) { atomicAdd(p, v); }
+
   static std::size_t count_below(const std::uint32_t* keys, std::size_t n, std::uint32_t bound) {
     static DeviceBuffer<std::uint32_t> out;
     out.resize(1);

@@ -10,8 +10,10 @@
 #include <cstdint>
 
 #include "netsph/backend/device/device_grid.hpp"
+#include "netsph/bodies/rigid_body.hpp"
 #include "netsph/boundary/mdbc.hpp"
 #include "netsph/core/host_device.hpp"
+#include "netsph/sph/contact.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/ghost_interpolation.hpp"
 #include "netsph/sph/pair_interaction.hpp"
@@ -21,12 +23,35 @@
 
 namespace netsph {
 
-/// Per-wall constants a kernel needs (fixed walls only in this version of the device step).
+/// Per-wall constants a kernel needs.
 struct DeviceWall {
   bool mdbc = false;
   WallSlip slip = WallSlip::WallVelocity;
-  /// DBC, or mDBC showing the wall's own velocity: the fluid sees v = 0 in both equations.
+  /// DBC, or mDBC showing the wall's own velocity: the fluid sees it in both equations.
   bool shows_own_velocity = true;
+};
+
+/// A wall's velocity at the step's start, half step and end (Simulation's WallKinematics).
+struct DeviceWallMotion {
+  Vec3f start{}, half{}, end{};
+};
+
+/// A rigid body as its particles need it: the state of the current stage, where its particles'
+/// body-frame offsets and ghost vectors start in the concatenated tables, and its boundary
+/// condition.
+struct DeviceBody {
+  RigidState state;
+  std::uint32_t first_id = 0;     ///< id of its first particle (ids are consecutive)
+  std::uint32_t offset_base = 0;  ///< index of that particle in the offset and ghost tables
+  bool mdbc = false;
+  WallSlip slip = WallSlip::WallVelocity;
+  bool shows_own_velocity = true;
+};
+
+/// Fluid and contact force and torque on one body, summed over its particles (world frame,
+/// torque about the centre of mass), as Simulation::reduce_body_forces.
+struct DeviceBodyLoads {
+  double f[12];  ///< fluid force, fluid torque, contact force, contact torque
 };
 
 /// The particle arrays of the state being advanced (sorted by cell).
@@ -46,6 +71,9 @@ struct DeviceState {
 /// velocity under a mirror slip condition); it aliases vx.. when no wall mirrors.
 struct DeviceView {
   Real *x, *y, *z, *vx, *vy, *vz, *cvx, *cvy, *cvz, *rho, *press, *fluid;
+  /// Which solid a particle belongs to (as InteractionView::solid): -1 fluid or buffer, -2
+  /// wall, else the body index. Null when the case has no bodies (no contacts to find).
+  std::int32_t* solid;
 };
 
 /// The rates of one pass.
@@ -60,8 +88,9 @@ struct DeviceRates {
 
 /// The view of particle i (InteractionView::build).
 NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, const FluidModel& m,
-                                    const DeviceWall* walls, const Vec3d& origin, std::uint32_t i,
-                                    bool mirrors) {
+                                    const DeviceWall* walls, const DeviceWallMotion* motion,
+                                    const DeviceBody* bodies, const Vec3d& origin, std::uint32_t i,
+                                    bool mirrors, bool half_step) {
   const Vec3d p = s.pos[i];
   v.x[i] = static_cast<Real>(p.x - origin.x);
   v.y[i] = static_cast<Real>(p.y - origin.y);
@@ -72,12 +101,23 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
   v.press[i] = m.eos.pressure(s.rho[i]);
   const ParticleKind k = s.kind[i];
   v.fluid[i] = (k == ParticleKind::Fluid || k == ParticleKind::Buffer) ? Real(1) : Real(0);
+  if (v.solid) {
+    v.solid[i] = k == ParticleKind::Wall
+                     ? -2
+                     : (k == ParticleKind::Body ? static_cast<std::int32_t>(s.group[i]) : -1);
+  }
   if (mirrors) {
-    // A fixed wall under a mirror slip condition shows its own velocity, zero, to continuity.
-    const bool mirrored = k == ParticleKind::Wall && !walls[s.group[i]].shows_own_velocity;
-    v.cvx[i] = mirrored ? Real(0) : u.x;
-    v.cvy[i] = mirrored ? Real(0) : u.y;
-    v.cvz[i] = mirrored ? Real(0) : u.z;
+    // A solid under a mirror slip condition shows continuity its own velocity (Simulation::
+    // build_view): the wall's, or the body's at this point.
+    Vec3f c = u;
+    if (k == ParticleKind::Wall && !walls[s.group[i]].shows_own_velocity) {
+      const DeviceWallMotion w = motion[s.group[i]];
+      c = half_step ? w.half : w.start;
+    } else if (k == ParticleKind::Body && !bodies[s.group[i]].shows_own_velocity) {
+      const RigidState& b = bodies[s.group[i]].state;
+      c = Vec3f(rigid_point_velocity(b, s.pos[i] - b.com));
+    }
+    v.cvx[i] = c.x, v.cvy[i] = c.y, v.cvz[i] = c.z;
   }
 }
 
@@ -93,9 +133,11 @@ NETSPH_HD void device_rates_particle(const DeviceGrid& g, const std::uint32_t* c
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
   const Real cxa = v.cvx[a], cya = v.cvy[a], cza = v.cvz[a];
   const Real rho_a = v.rho[a], press_a = v.press[a];
-  const bool fluid_a = ka == ParticleKind::Fluid;
+  const bool fluid_a = ka == ParticleKind::Fluid, body_a = ka == ParticleKind::Body;
+  // A body sees gauge pressures (backend/cpu/rates.cpp, body_sums, says why).
+  const Real p_bg = m.eos.p_background;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0, gx = 0, gy = 0, gz = 0, div = 0;
-  if (fluid_a || ka == ParticleKind::Wall) {
+  if (ka != ParticleKind::Buffer) {
     g.for_each_range(cell_begin, keys[a], [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
       const Real xs = xa - shift.x, ys = ya - shift.y, zs = za - shift.z;
       for (std::uint32_t b = b0; b < b1; ++b) {
@@ -119,6 +161,19 @@ NETSPH_HD void device_rates_particle(const DeviceGrid& g, const std::uint32_t* c
             gx += vf * dx, gy += vf * dy, gz += vf * dz;
             div -= vf * r2;
           }
+        } else if (body_a && v.fluid[b] > Real(0)) {
+          const Neighbour nb{{dx, dy, dz},
+                             r2,
+                             {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
+                             {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
+                             v.rho[b],
+                             v.press[b] - p_bg,
+                             m.mass,
+                             v.fluid[b]};
+          const PairRates s =
+              fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a - p_bg, nb);
+          ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
+          vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
         } else if (v.fluid[b] > Real(0)) {
           const Neighbour nb{{dx, dy, dz},
                              r2,
@@ -140,7 +195,9 @@ NETSPH_HD void device_rates_particle(const DeviceGrid& g, const std::uint32_t* c
     out.acc[a] = total;
     out.acc2[a] = total.x * total.x + total.y * total.y + total.z * total.z;
   } else {
-    out.acc[a] = Vec3f{};
+    // Body particles: the fluid's force per unit mass, without gravity (the body's weight acts
+    // on its centre of mass); walls and buffers: none.
+    out.acc[a] = body_a ? Vec3f{ax, ay, az} : Vec3f{};
     out.acc2[a] = 0;
   }
   out.drho[a] = dr;
@@ -151,19 +208,33 @@ NETSPH_HD void device_rates_particle(const DeviceGrid& g, const std::uint32_t* c
   }
 }
 
-/// mDBC state of wall particle i (Simulation::apply_mdbc with a fixed wall): the ghost node's
-/// first-order value over the fluid (and buffer) particles in reach, extrapolated back.
+/// mDBC state of wall or body particle i (Simulation::apply_mdbc): the ghost node's
+/// first-order value over the fluid (and buffer) particles in reach, extrapolated back. Walls
+/// without a ghost (DBC) show their own velocity.
 template <class Kernel>
 NETSPH_HD void device_mdbc_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
                                     const DeviceState& s, const DeviceWall* walls,
+                                    const DeviceWallMotion* motion, const DeviceBody* bodies,
                                     const FluidModel& m, std::uint32_t i) {
-  if (s.kind[i] != ParticleKind::Wall) return;
-  const DeviceWall w = walls[s.group[i]];
+  const ParticleKind k = s.kind[i];
+  if (k != ParticleKind::Wall && k != ParticleKind::Body) return;
   const Vec3f off = s.ghost[i];
   const bool has_ghost = off.x != 0 || off.y != 0 || off.z != 0;
-  if (!w.mdbc || !has_ghost) {
-    if (w.shows_own_velocity) s.vel[i] = Vec3f{};
-    return;
+  WallSlip slip;
+  Vec3f v_solid;
+  if (k == ParticleKind::Wall) {
+    const DeviceWall w = walls[s.group[i]];
+    v_solid = motion[s.group[i]].start;
+    if (!w.mdbc || !has_ghost) {
+      if (w.shows_own_velocity) s.vel[i] = v_solid;
+      return;
+    }
+    slip = w.slip;
+  } else {
+    if (!has_ghost) return;  // body ghosts are zero unless the body uses mDBC
+    const DeviceBody& b = bodies[s.group[i]];
+    slip = b.slip;
+    v_solid = Vec3f(rigid_point_velocity(b.state, s.pos[i] - b.state.com));
   }
   const Vec3d point = g.wrapped(s.pos[i] + Vec3d(off));
   GhostSums sums;
@@ -184,9 +255,52 @@ NETSPH_HD void device_mdbc_particle(const DeviceGrid& g, const std::uint32_t* ce
     });
   }
   const GhostValue gv = ghost_solve(sums, m.dims);
-  const WallState st = mdbc_wall_state(gv, off, m.eos.rho0, w.slip, Vec3f{});
+  const WallState st = mdbc_wall_state(gv, off, m.eos.rho0, slip, v_solid);
   s.rho[i] = st.rho;
   s.vel[i] = st.vel;
+}
+
+/// Contact acceleration of body particle i from the particles of other solids
+/// (backend/cpu/contact.cpp).
+NETSPH_HD void device_contact_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
+                                       const std::uint32_t* keys, const ParticleKind* kind,
+                                       const DeviceView& v, const ContactModel& model,
+                                       Vec3f* contact, std::uint32_t a) {
+  if (kind[a] != ParticleKind::Body) {
+    contact[a] = Vec3f{};
+    return;
+  }
+  const std::int32_t self = v.solid[a];
+  Vec3f acc{};
+  g.for_each_range(cell_begin, keys[a], [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
+    const Vec3f pa(v.x[a] - shift.x, v.y[a] - shift.y, v.z[a] - shift.z);
+    for (std::uint32_t b = b0; b < b1; ++b) {
+      const std::int32_t other = v.solid[b];
+      if (other == -1 || other == self) continue;
+      acc += contact_acceleration(model, pa - Vec3f(v.x[b], v.y[b], v.z[b]),
+                                  Vec3f(v.vx[a] - v.vx[b], v.vy[a] - v.vy[b], v.vz[a] - v.vz[b]));
+    }
+  });
+  contact[a] = acc;
+}
+
+/// Places body particle i rigidly on its body's state (Simulation::place_body_particles);
+/// returns its displacement squared from `start_pos` (null: 0).
+NETSPH_HD double device_place_body_particle(const DeviceState& s, const DeviceBody* bodies,
+                                            const Vec3f* offsets, const Vec3f* ghosts, int dims,
+                                            const Vec3d* start_pos, std::uint32_t i) {
+  if (s.kind[i] != ParticleKind::Body) return 0;
+  const DeviceBody& b = bodies[s.group[i]];
+  const std::uint32_t k = b.offset_base + (s.id[i] - b.first_id);
+  Vec3d r = rotate(b.state.q, Vec3d(offsets[k]));
+  Vec3d ghost = rotate(b.state.q, Vec3d(ghosts[k]));
+  if (dims == 2) r.y = 0, ghost.y = 0;  // rotation round-off must not leave the x-z plane
+  s.pos[i] = b.state.com + r;
+  if (b.shows_own_velocity) s.vel[i] = Vec3f(rigid_point_velocity(b.state, r));
+  s.ghost[i] = Vec3f(ghost);
+  if (!start_pos) return 0;
+  const Vec3d d = s.pos[i] - start_pos[i];
+  return d.x * d.x + d.y * d.y + d.z * d.z;
 }
 
 /// The step-start copy of one particle.
@@ -196,17 +310,23 @@ struct DeviceStart {
   Real* rho;
 };
 
-/// Predictor (half step) of particle i; returns its displacement squared. Fixed walls stay in
-/// place and integrate continuity (backend/cpu/integrate.cpp).
+/// Predictor (half step) of particle i; returns its displacement squared. Walls move with
+/// their start velocity; body particles integrate continuity only (their motion is the body's;
+/// backend/cpu/integrate.cpp).
 NETSPH_HD double device_predict_particle(const DeviceState& p, const DeviceStart& s,
                                          const DeviceRates& r, const DeviceWall* walls,
-                                         const FluidModel& m, double dt, std::uint32_t i) {
-  if (p.kind[i] == ParticleKind::Fluid) {
+                                         const DeviceWallMotion* motion, const FluidModel& m,
+                                         double dt, std::uint32_t i) {
+  const ParticleKind k = p.kind[i];
+  if (k == ParticleKind::Fluid) {
     symplectic_predict(s.pos[i], s.vel[i], s.rho[i], r.acc[i], r.drho[i], dt, p.pos[i], p.vel[i],
                        p.rho[i]);
-  } else if (p.kind[i] == ParticleKind::Wall) {
-    p.pos[i] = s.pos[i];
-    if (walls[p.group[i]].shows_own_velocity) p.vel[i] = Vec3f{};
+  } else if (k == ParticleKind::Wall) {
+    const DeviceWallMotion w = motion[p.group[i]];
+    p.pos[i] = s.pos[i] + Vec3d(w.start) * (0.5 * dt);
+    if (walls[p.group[i]].shows_own_velocity) p.vel[i] = w.half;
+    p.rho[i] = clamp_boundary_density(symplectic_density_half(s.rho[i], r.drho[i], dt), m.eos.rho0);
+  } else if (k == ParticleKind::Body) {
     p.rho[i] = clamp_boundary_density(symplectic_density_half(s.rho[i], r.drho[i], dt), m.eos.rho0);
   }
   const Vec3d d = p.pos[i] - s.pos[i];
@@ -217,9 +337,10 @@ NETSPH_HD double device_predict_particle(const DeviceState& p, const DeviceStart
 /// is not finite.
 NETSPH_HD bool device_correct_particle(const DeviceState& p, const DeviceStart& s,
                                        const DeviceRates& r, const DeviceWall* walls,
-                                       const FluidModel& m, const ShiftingParams* shift, double dt,
-                                       std::uint32_t i) {
-  if (p.kind[i] == ParticleKind::Fluid) {
+                                       const DeviceWallMotion* motion, const FluidModel& m,
+                                       const ShiftingParams* shift, double dt, std::uint32_t i) {
+  const ParticleKind k = p.kind[i];
+  if (k == ParticleKind::Fluid) {
     const Real rho_half = p.rho[i];
     symplectic_correct(s.pos[i], s.vel[i], s.rho[i], r.acc[i], r.drho[i], rho_half, dt, p.pos[i],
                        p.vel[i], p.rho[i]);
@@ -229,9 +350,14 @@ NETSPH_HD bool device_correct_particle(const DeviceState& p, const DeviceStart& 
                                               std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z),
                                               static_cast<Real>(dt)));
     }
-  } else if (p.kind[i] == ParticleKind::Wall) {
-    p.pos[i] = s.pos[i];
-    if (walls[p.group[i]].shows_own_velocity) p.vel[i] = Vec3f{};
+  } else if (k == ParticleKind::Wall) {
+    const DeviceWallMotion w = motion[p.group[i]];
+    // Exact for a velocity linear in time over the step (trapezoid rule).
+    p.pos[i] = s.pos[i] + (Vec3d(w.start) + Vec3d(w.end)) * (0.5 * dt);
+    if (walls[p.group[i]].shows_own_velocity) p.vel[i] = w.end;
+    const Real rho_new = symplectic_density_full(s.rho[i], r.drho[i], p.rho[i], dt);
+    p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);
+  } else if (k == ParticleKind::Body) {
     const Real rho_new = symplectic_density_full(s.rho[i], r.drho[i], p.rho[i], dt);
     p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);
   }

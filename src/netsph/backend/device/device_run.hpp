@@ -17,6 +17,9 @@ class DeviceRun {
   virtual std::int64_t steps() const = 0;
   virtual std::size_t size() const = 0;
   virtual double bytes_per_particle() const = 0;
+  /// The bodies' states and loads as of the last stage.
+  virtual const std::vector<RigidState>& body_states() const = 0;
+  virtual const std::vector<DeviceBodyLoads>& body_loads() const = 0;
 };
 
 template <class Exec>
@@ -29,6 +32,8 @@ class DeviceRunOn final : public DeviceRun {
   std::int64_t steps() const override { return s_.steps(); }
   std::size_t size() const override { return s_.size(); }
   double bytes_per_particle() const override { return s_.bytes_per_particle(); }
+  const std::vector<RigidState>& body_states() const override { return s_.body_states(); }
+  const std::vector<DeviceBodyLoads>& body_loads() const override { return s_.body_loads(); }
 
  private:
   DeviceStepper<Exec> s_;

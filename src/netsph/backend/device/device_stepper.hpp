@@ -4,21 +4,31 @@
 // sequence is Simulation::step's (solver/simulation.hpp) for the cases this version supports:
 //
 //   wrap periodic axes; sort by cell key (radix sort of keys, gather of every array);
-//   cell ranges; mDBC wall state; view -> rates -> dt (max reductions); save the start;
-//   predictor [re-sort if a particle moved past the grid skin]; view -> rates (+ shifting)
-//   -> corrector; non-finite check.
+//   cell ranges; body particles placed; mDBC state of walls and bodies; view -> rates
+//   (+ contacts) -> dt (max reductions); save the start; body loads -> bodies' predictor (on
+//   the host) -> predictor, body particles placed [re-sort if a particle moved past the grid
+//   skin]; view -> rates (+ shifting, contacts) -> body loads -> bodies' corrector ->
+//   corrector, body particles placed; non-finite check.
 //
-// Supported: fluid particles, fixed walls (DBC or mDBC, any slip), periodic axes, shifting,
-// both kernels, both viscosity models, every density diffusion. Not yet: open boundaries,
-// moving walls, bodies, nets and probes; DeviceSetup refuses a case that has them (the caller
-// turns that into a message naming what to use instead).
+// Supported: fluid particles, walls (DBC or mDBC, any slip, moving), rigid bodies (fixed,
+// floating, prescribed; nets' knots through the host's knot-spring solver), contacts,
+// periodic axes, shifting, both kernels, both viscosity models, every density diffusion. Not
+// yet: open boundaries and probes; the setup refuses a case that has them.
 //
-// Exec provides: Buffer<T> (resize, size, data), for_each(n, f), sort_pairs(keys_in, keys_out,
-// vals_in, vals_out, n, key_bits), max_of(const Real*, n), max_of(const double*, n),
-// count_below(const uint32*, n, bound), upload(Buffer<T>&, const T*, n), download(T*, const
-// Buffer<T>&, n). f must be a NETSPH_LAMBDA: it runs on the device.
+// Bodies and nets stay on the host: after each rates pass the step reduces every body's force
+// and torque on the device (one pass over particles, atomics per body), copies those 12
+// numbers per body back, lets the host advance the bodies (hooks.advance_bodies, the CPU
+// solver's code) and copies their new states in; the particles then follow on the device.
+//
+// Exec provides: Buffer<T> (resize, size, data, swap), for_each(n, f), sort_pairs(keys_in,
+// keys_out, vals_in, vals_out, n, key_bits), max_of(const T*, n), count_below(const uint32*,
+// n, bound), upload(Buffer<T>&, const T*, n), download(T*, const Buffer<T>&, n), and
+// atomic_add(double*, double) callable inside f. f must be a NETSPH_LAMBDA: on CUDA it runs on
+// the device.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,7 +38,7 @@
 #include "netsph/sph/time_step.hpp"
 
 #if defined(__CUDACC__)
-#define NETSPH_LAMBDA __host__ __device__
+#define NETSPH_LAMBDA __device__
 #else
 #define NETSPH_LAMBDA
 #endif
@@ -46,6 +56,16 @@ struct DeviceSetup {
   bool shifting = false;
   ShiftingParams shift_params;
   std::vector<DeviceWall> walls;  ///< by wall index
+  /// Velocity of wall w at time t (null: every wall is at rest).
+  std::function<Vec3f(std::size_t w, double t)> wall_velocity;
+  std::vector<DeviceBody> bodies;                ///< by body index, with their initial states
+  std::vector<Vec3f> body_offsets, body_ghosts;  ///< body frame, by DeviceBody::offset_base + k
+  ContactModel contact;
+  /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
+  /// holds the bodies' states on entry and receives the new ones. `time` is the step's start.
+  std::function<void(bool corrector, double time, double dt,
+                     const std::vector<DeviceBodyLoads>& loads, std::vector<RigidState>& states)>
+      advance_bodies;
 };
 
 /// Why a step stopped early.
@@ -69,6 +89,8 @@ class DeviceStepper {
     n_ = p.size();
     next_id_ = p.next_id;
     for (const DeviceWall& w : s_.walls) mirrors_ |= !w.shows_own_velocity;
+    for (const DeviceBody& b : s_.bodies) mirrors_ |= !b.shows_own_velocity;
+    has_bodies_ = !s_.bodies.empty();
     alloc(n_);
     Exec::upload(pos_, p.pos.data(), n_);
     Exec::upload(vel_, p.vel.data(), n_);
@@ -78,6 +100,16 @@ class DeviceStepper {
     Exec::upload(group_, p.group.data(), n_);
     Exec::upload(ghost_, p.ghost.data(), n_);
     Exec::upload(walls_, s_.walls.data(), s_.walls.size());
+    motion_host_.resize(s_.walls.size());
+    Exec::upload(motion_, motion_host_.data(), motion_host_.size());
+    if (has_bodies_) {
+      Exec::upload(bodies_, s_.bodies.data(), s_.bodies.size());
+      Exec::upload(offsets_, s_.body_offsets.data(), s_.body_offsets.size());
+      Exec::upload(body_ghosts_, s_.body_ghosts.data(), s_.body_ghosts.size());
+      loads_.resize(s_.bodies.size());
+      loads_host_.resize(s_.bodies.size());
+      for (const DeviceBody& b : s_.bodies) states_.push_back(b.state);
+    }
   }
 
   /// Advances one symplectic step; the report says whether it completed.
@@ -86,9 +118,12 @@ class DeviceStepper {
     const std::size_t before = n_;
     sort(false);
     rep.lost = before - n_;
+    wall_motion(0.0);  // velocities at t for the boundary state
+    place_bodies(false);
     mdbc();
-    view();
+    view(false);
     rates(false);
+    if (has_bodies_) contacts();
     const TimeStepInputs in{std::sqrt(static_cast<double>(Exec::max_of(acc2_.data(), n_))),
                             static_cast<double>(Exec::max_of(visc_.data(), n_))};
     rep.dt_limits = compute_time_step(s_.model, s_.cfl, in);
@@ -101,15 +136,23 @@ class DeviceStepper {
       rep.status = DeviceStepStatus::DtCollapsed;
       return rep;
     }
+    wall_motion(dt);
     save_start();
-    const double moved = predict(dt);
+    if (has_bodies_) advance_bodies(false, dt);
+    double moved = predict(dt);
+    if (has_bodies_) moved = std::max(moved, place_bodies(true));
     if (moved > s_.max_displacement) {
       sort(true);
       rep.resorted = true;
     }
-    view();
+    view(true);
     rates(s_.shifting);
+    if (has_bodies_) {
+      contacts();
+      advance_bodies(true, dt);
+    }
     if (!correct(dt)) rep.status = DeviceStepStatus::NonFinite;
+    place_bodies(false);
     time_ += dt;
     ++steps_;
     return rep;
@@ -131,6 +174,10 @@ class DeviceStepper {
 
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
+  /// The bodies' states as of the last stage.
+  const std::vector<RigidState>& body_states() const { return states_; }
+  /// The bodies' loads of the last rates pass.
+  const std::vector<DeviceBodyLoads>& body_loads() const { return loads_host_; }
   std::size_t size() const { return n_; }
   /// Bytes the executor holds per particle (all buffers, capacity, and the cell table).
   double bytes_per_particle() const {
@@ -162,6 +209,7 @@ class DeviceStepper {
     acc_.resize(n), drho_.resize(n), acc2_.resize(n), visc_.resize(n);
     if (s_.shifting) grad_c_.resize(n), div_r_.resize(n);
     keys_.resize(n), keys2_.resize(n), order_.resize(n), order2_.resize(n), moved_.resize(n);
+    if (has_bodies_) contact_.resize(n), solid_.resize(n);
     cell_begin_.resize(static_cast<std::size_t>(s_.grid.cells()) + 2);
   }
 
@@ -171,9 +219,11 @@ class DeviceStepper {
   }
   DeviceStart start() { return {spos_.data(), svel_.data(), srho_.data()}; }
   DeviceView view_arrays() {
-    DeviceView v{x_.data(),  y_.data(),  z_.data(),  vx_.data(),   vy_.data(),    vz_.data(),
-                 vx_.data(), vy_.data(), vz_.data(), vrho_.data(), press_.data(), fluid_.data()};
+    DeviceView v{x_.data(),     y_.data(),     z_.data(),  vx_.data(), vy_.data(),
+                 vz_.data(),    vx_.data(),    vy_.data(), vz_.data(), vrho_.data(),
+                 press_.data(), fluid_.data(), nullptr};
     if (mirrors_) v.cvx = cvx_.data(), v.cvy = cvy_.data(), v.cvz = cvz_.data();
+    v.solid = has_bodies_ ? solid_.data() : nullptr;
     return v;
   }
   DeviceRates rate_arrays() {
@@ -249,22 +299,95 @@ class DeviceStepper {
     const std::uint32_t* begin = cell_begin_.data();
     const DeviceState st = state();
     const DeviceWall* walls = walls_.data();
+    const DeviceWallMotion* motion = motion_.data();
+    const DeviceBody* bodies = bodies_.data();
     const FluidModel m = s_.model;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      device_mdbc_particle<K>(g, begin, st, walls, m, i);
+      device_mdbc_particle<K>(g, begin, st, walls, motion, bodies, m, i);
     });
   }
 
-  void view() {
+  void view(bool half_step) {
     const DeviceState st = state();
     const DeviceView v = view_arrays();
     const FluidModel m = s_.model;
     const DeviceWall* walls = walls_.data();
+    const DeviceWallMotion* motion = motion_.data();
+    const DeviceBody* bodies = bodies_.data();
     const Vec3d origin = s_.grid.origin;
     const bool mirrors = mirrors_;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      device_view_particle(st, v, m, walls, origin, i, mirrors);
+      device_view_particle(st, v, m, walls, motion, bodies, origin, i, mirrors, half_step);
     });
+  }
+
+  /// The walls' velocities at t, t + dt/2 and t + dt, copied to the executor.
+  void wall_motion(double dt) {
+    if (!s_.wall_velocity) return;
+    for (std::size_t w = 0; w < motion_host_.size(); ++w) {
+      motion_host_[w] = {s_.wall_velocity(w, time_), s_.wall_velocity(w, time_ + 0.5 * dt),
+                         s_.wall_velocity(w, time_ + dt)};
+    }
+    Exec::upload(motion_, motion_host_.data(), motion_host_.size());
+  }
+
+  /// Body particles on their bodies' states; returns the largest displacement from the step
+  /// start when `from_start`.
+  double place_bodies(bool from_start) {
+    if (!has_bodies_) return 0;
+    const DeviceState st = state();
+    const DeviceBody* bodies = bodies_.data();
+    const Vec3f* offsets = offsets_.data();
+    const Vec3f* ghosts = body_ghosts_.data();
+    const int dims = s_.model.dims;
+    const Vec3d* start_pos = from_start ? spos_.data() : nullptr;
+    double* moved = moved_.data();
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      moved[i] = device_place_body_particle(st, bodies, offsets, ghosts, dims, start_pos, i);
+    });
+    return from_start ? std::sqrt(Exec::max_of(moved_.data(), n_)) : 0.0;
+  }
+
+  void contacts() {
+    const DeviceGrid g = s_.grid;
+    const std::uint32_t* begin = cell_begin_.data();
+    const std::uint32_t* keys = keys_.data();
+    const ParticleKind* kind = kind_.data();
+    const DeviceView v = view_arrays();
+    const ContactModel c = s_.contact;
+    Vec3f* contact = contact_.data();
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
+      device_contact_particle(g, begin, keys, kind, v, c, contact, a);
+    });
+  }
+
+  /// Reduces the bodies' loads on the executor, advances the bodies on the host and copies
+  /// their states back.
+  void advance_bodies(bool corrector, double dt) {
+    const std::size_t nb = s_.bodies.size();
+    double* loads = reinterpret_cast<double*>(loads_.data());
+    Exec::for_each(nb * 12, [=] NETSPH_LAMBDA(std::uint32_t k) { loads[k] = 0; });
+    const DeviceState st = state();
+    const DeviceBody* bodies = bodies_.data();
+    const Vec3f* acc = acc_.data();
+    const Vec3f* contact = contact_.data();
+    const double mass = s_.model.mass;
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      if (st.kind[i] != ParticleKind::Body) return;
+      const std::uint32_t b = st.group[i];
+      const Vec3d r = st.pos[i] - bodies[b].state.com;
+      const Vec3d f = Vec3d(acc[i]) * mass, fc = Vec3d(contact[i]) * mass;
+      const Vec3d t = cross(r, f), tc = cross(r, fc);
+      double* out = loads + 12 * b;
+      const double v[12] = {f.x, f.y, f.z, t.x, t.y, t.z, fc.x, fc.y, fc.z, tc.x, tc.y, tc.z};
+      for (int k = 0; k < 12; ++k) {
+        if (v[k] != 0) Exec::atomic_add(out + k, v[k]);
+      }
+    });
+    Exec::download(loads_host_.data(), loads_, nb);
+    s_.advance_bodies(corrector, time_, dt, loads_host_, states_);
+    for (std::size_t b = 0; b < nb; ++b) s_.bodies[b].state = states_[b];
+    Exec::upload(bodies_, s_.bodies.data(), nb);
   }
 
   void rates(bool shift) {
@@ -322,10 +445,11 @@ class DeviceStepper {
     const DeviceStart ss = start();
     const DeviceRates r = rate_arrays();
     const DeviceWall* walls = walls_.data();
+    const DeviceWallMotion* motion = motion_.data();
     const FluidModel m = s_.model;
     double* moved = moved_.data();
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      moved[i] = device_predict_particle(st, ss, r, walls, m, dt, i);
+      moved[i] = device_predict_particle(st, ss, r, walls, motion, m, dt, i);
     });
     return std::sqrt(Exec::max_of(moved_.data(), n_));
   }
@@ -336,13 +460,15 @@ class DeviceStepper {
     const DeviceStart ss = start();
     const DeviceRates r = rate_arrays();
     const DeviceWall* walls = walls_.data();
+    const DeviceWallMotion* motion = motion_.data();
     const FluidModel m = s_.model;
     const bool shift = s_.shifting;
     const ShiftingParams sp = s_.shift_params;
     double* bad = moved_.data();  // reused: 1 where the state is not finite
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      bad[i] =
-          device_correct_particle(st, ss, r, walls, m, shift ? &sp : nullptr, dt, i) ? 0.0 : 1.0;
+      bad[i] = device_correct_particle(st, ss, r, walls, motion, m, shift ? &sp : nullptr, dt, i)
+                   ? 0.0
+                   : 1.0;
     });
     return !(Exec::max_of(moved_.data(), n_) > 0);
   }
@@ -352,6 +478,7 @@ class DeviceStepper {
   std::size_t n_ = 0;
   std::uint32_t next_id_ = 0;
   bool mirrors_ = false;
+  bool has_bodies_ = false;
   double time_ = 0;
   std::int64_t steps_ = 0;
   double dt_floor_ = 0;
@@ -363,6 +490,14 @@ class DeviceStepper {
   Buffer<std::uint32_t> id_, id2_, group_, group2_, keys_, keys2_, order_, order2_, cell_begin_;
   Buffer<double> moved_;
   Buffer<DeviceWall> walls_;
+  Buffer<DeviceWallMotion> motion_;
+  std::vector<DeviceWallMotion> motion_host_;
+  Buffer<DeviceBody> bodies_;
+  Buffer<Vec3f> offsets_, body_ghosts_, contact_;
+  Buffer<std::int32_t> solid_;
+  Buffer<DeviceBodyLoads> loads_;
+  std::vector<DeviceBodyLoads> loads_host_;
+  std::vector<RigidState> states_;
 };
 
 }  // namespace netsph

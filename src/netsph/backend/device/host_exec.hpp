@@ -42,6 +42,11 @@ struct HostExec {
     return m;
   }
 
+  static void atomic_add(double* p, double v) {
+#pragma omp atomic
+    *p += v;
+  }
+
   /// How many of the sorted keys are below `bound`.
   static std::size_t count_below(const std::uint32_t* keys, std::size_t n, std::uint32_t bound) {
     return static_cast<std::size_t>(std::lower_bound(keys, keys + n, bound) - keys);

@@ -1,0 +1,22 @@
+#pragma once
+// One symplectic stage of every rigid body, from the loads of that stage's rates pass: shared
+// by the CPU solver (simulation.cpp) and the device-shaped step's host side
+// (device_setup.cpp), which keeps bodies and nets on the host and their particles on the
+// device.
+#include <vector>
+
+#include "netsph/bodies/rigid_body.hpp"
+#include "netsph/case/case_spec.hpp"
+#include "netsph/solver/net_coupling.hpp"
+
+namespace netsph {
+
+/// Advances every body to the half step (predictor, `corrector` false) or the full step from
+/// its step-start state (saved here in the predictor): fixed bodies stay, prescribed ones
+/// follow their velocity history, floating ones move under fluid, contact and external loads
+/// and gravity; net knots are then advanced by the knot-spring solver. `time` is the step's
+/// start.
+void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
+                    std::vector<CoupledNet>& nets, double time, bool corrector, double dt);
+
+}  // namespace netsph
