@@ -31,15 +31,9 @@ struct Difference {
   double body_force = 0;  ///< largest body fluid-force difference over the largest force
 };
 
-CaseSpec load(const std::string& name, const std::vector<std::string>& overrides) {
-  if (name.rfind("good/", 0) == 0)
-    return read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/" + name, overrides);
-  return test::load_case(name, overrides);
-}
-
 Difference compare(const std::string& name, const std::vector<std::string>& overrides, int steps,
                    DeviceExecutor exec) {
-  const CaseSpec spec = load(name, overrides);
+  const CaseSpec spec = test::load_case(name, overrides);
   Simulation cpu(spec);
   const std::unique_ptr<DeviceRun> dev = make_device_run(spec, exec);
   Difference d;
@@ -146,21 +140,21 @@ TEST(DeviceParity, HostFixedThinPlateMatchesTheCpuBackend) {
   expect_parity(compare("thin_plate_leak2d.toml", kThinPlate, 100, DeviceExecutor::Host));
 }
 
-// A coupled net: a knot tethered by one twine in a periodic duct, shifting on (the bodies and
-// the knot-spring solver on the host, their particles on the device).
-TEST(DeviceParity, HostCoupledNetMatchesTheCpuBackend) {
-  expect_parity(compare("good/device_tethered_knot.toml", {}, 40, DeviceExecutor::Host));
+// Open boundaries: a 2D channel with an inlet and an outlet buffer (particles created and
+// removed every few steps), shifting.
+TEST(DeviceParity, HostOpenChannelMatchesTheCpuBackend) {
+  expect_parity(compare("channel2d.toml", {}, 300, DeviceExecutor::Host));
 }
 
-TEST(DeviceParity, UnsupportedCaseIsRefusedWithTheFeatureNamed) {
-  const CaseSpec spec = test::load_case("channel2d.toml");
-  try {
-    make_device_run(spec, DeviceExecutor::Host);
-    FAIL() << "a case with open boundaries was accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("open boundaries"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("--backend cpu"), std::string::npos) << e.what();
-  }
+// A parabolic inflow profile and a fixed cylinder (the DFG benchmark).
+TEST(DeviceParity, HostDfgCylinderMatchesTheCpuBackend) {
+  expect_parity(compare("dfg_cylinder2d.toml", {"simulation.dp=0.01"}, 100, DeviceExecutor::Host));
+}
+
+// A coupled net: a knot tethered by one twine in a duct with an inlet and an outlet, shifting
+// on (the bodies and the knot-spring solver on the host, their particles on the device).
+TEST(DeviceParity, HostCoupledNetMatchesTheCpuBackend) {
+  expect_parity(compare("net_tethered_knot.toml", {}, 40, DeviceExecutor::Host));
 }
 
 /// Skips the calling test unless a CUDA device is usable.
@@ -205,7 +199,29 @@ TEST(DeviceParity, CudaFloatingBoxMatchesTheCpuBackend) {
 
 TEST(DeviceParity, CudaCoupledNetMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("good/device_tethered_knot.toml", {}, 40, DeviceExecutor::Cuda));
+  expect_parity(compare("net_tethered_knot.toml", {}, 40, DeviceExecutor::Cuda));
+}
+
+TEST(DeviceParity, CudaOpenChannelMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("channel2d.toml", {}, 300, DeviceExecutor::Cuda));
+}
+
+TEST(DeviceParity, CudaDfgCylinderMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("dfg_cylinder2d.toml", {"simulation.dp=0.01"}, 100, DeviceExecutor::Cuda));
+}
+
+// Without a usable device the CUDA run is refused with the reason and the way out, never a
+// crash (CI builds with nvcc and has no GPU).
+TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {
+  if (gpu_unavailable().empty()) GTEST_SKIP() << "a CUDA device is present";
+  try {
+    make_device_run(test::load_case("dambreak2d.toml", kDamBreak2D), DeviceExecutor::Cuda);
+    FAIL() << "a CUDA run was made without a device";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--backend cpu"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DeviceParity, CudaBoxOnTheFloorWithContactsMatchesTheCpuBackend) {

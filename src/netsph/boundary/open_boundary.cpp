@@ -5,25 +5,9 @@
 namespace netsph {
 
 Vec3f OpenBoundaryZone::imposed_velocity(const Vec3d& p) const {
-  double u = speed;
-  if (!profile_z.empty()) {
-    const double z = p.z;
-    if (z <= profile_z.front()) {
-      u = profile_u.front();
-    } else if (z >= profile_z.back()) {
-      u = profile_u.back();
-    } else {
-      for (std::size_t k = 1; k < profile_z.size(); ++k) {
-        if (z <= profile_z[k]) {
-          const double w = (z - profile_z[k - 1]) / (profile_z[k] - profile_z[k - 1]);
-          u = profile_u[k - 1] * (1 - w) + profile_u[k] * w;
-          break;
-        }
-      }
-    }
-  }
+  const double u = inflow_speed(speed, profile_z.data(), profile_u.data(), profile_z.size(), p.z);
   // Inlets push into the domain, outlets draw out of it.
-  return Vec3f(inward_normal() * (inlet ? u : -u));
+  return buffer_velocity(axis, inward, inlet, u);
 }
 
 int zone_containing(const std::vector<OpenBoundaryZone>& zones, const Vec3d& p) {
@@ -38,36 +22,38 @@ OpenBoundaryCounts update_open_boundary_particles(ParticleSet& p,
                                                   const std::vector<OpenBoundaryZone>& zones) {
   OpenBoundaryCounts counts;
   if (zones.empty()) return counts;
+  std::vector<ZoneGeometry> geo;
+  for (const OpenBoundaryZone& z : zones) geo.push_back(z.geometry());
   const std::size_t n = p.size();  // particles appended below are not revisited
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < n; ++i) {
-    if (p.kind[i] == ParticleKind::Buffer) {
-      const OpenBoundaryZone& z = zones[p.group[i]];
-      const double d = z.depth(p.pos[i]);
-      if (d < 0) {
-        const std::uint32_t zone = p.group[i];
+    std::uint32_t entered = 0;
+    switch (buffer_transition(geo.data(), geo.size(), p.kind[i], p.group[i], p.pos[i], entered)) {
+      case BufferTransition::None:
+        break;
+      case BufferTransition::ToFluidAndCreate: {
+        // Copies, not references: add() may reallocate the arrays.
+        const Vec3d behind = created_buffer_position(geo[p.group[i]], p.pos[i]);
+        const Vec3f v = p.vel[i];
+        const Real rho = p.rho[i];
+        p.add(behind, v, rho, ParticleKind::Buffer, p.group[i]);
+        ++counts.created;
+        [[fallthrough]];
+      }
+      case BufferTransition::ToFluid:
         p.kind[i] = ParticleKind::Fluid;
         p.group[i] = 0;
         ++counts.entered_fluid;
-        if (z.inlet && p.pos[i].z <= z.surface_z) {
-          // Copies, not references: add() may reallocate the arrays.
-          const Vec3d behind = p.pos[i] - z.inward_normal() * z.width;
-          const Vec3f v = p.vel[i];
-          const Real rho = p.rho[i];
-          p.add(behind, v, rho, ParticleKind::Buffer, zone);
-          ++counts.created;
-        }
-      } else if (d > z.width) {
+        break;
+      case BufferTransition::Remove:
         p.pos[i] = {nan, nan, nan};
         ++counts.removed;
-      }
-    } else if (p.kind[i] == ParticleKind::Fluid) {
-      const int z = zone_containing(zones, p.pos[i]);
-      if (z >= 0) {
+        break;
+      case BufferTransition::ToBuffer:
         p.kind[i] = ParticleKind::Buffer;
-        p.group[i] = static_cast<std::uint32_t>(z);
+        p.group[i] = entered;
         ++counts.absorbed;
-      }
+        break;
     }
   }
   return counts;

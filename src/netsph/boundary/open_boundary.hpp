@@ -17,11 +17,104 @@
 #include <string>
 #include <vector>
 
+#include "netsph/core/host_device.hpp"
 #include "netsph/core/physics_options.hpp"
 #include "netsph/core/vec3.hpp"
+#include "netsph/sph/equation_of_state.hpp"
 #include "netsph/sph/particle_set.hpp"
 
 namespace netsph {
+
+// The formulas of the buffers, for both backends.
+
+/// Depth of p into a buffer whose interface lies at `plane` on `axis`, the buffer on the side
+/// `inward` points away from: 0 at the interface, the buffer width at the domain face, < 0 in
+/// the fluid.
+NETSPH_HD double buffer_depth(int axis, double inward, double plane, const Vec3d& p) {
+  return (plane - p[axis]) * inward;
+}
+
+/// Speed at height z of a piecewise-linear inflow profile (n points, z increasing; constant
+/// beyond the ends), or `speed` when there is no profile (n == 0).
+NETSPH_HD double inflow_speed(double speed, const double* pz, const double* pu, std::size_t n,
+                              double z) {
+  if (n == 0) return speed;
+  if (z <= pz[0]) return pu[0];
+  if (z >= pz[n - 1]) return pu[n - 1];
+  for (std::size_t k = 1; k < n; ++k) {
+    if (z <= pz[k]) {
+      const double w = (z - pz[k - 1]) / (pz[k] - pz[k - 1]);
+      return pu[k - 1] * (1 - w) + pu[k] * w;
+    }
+  }
+  return pu[n - 1];
+}
+
+/// Density of a buffer particle at height z under a free surface at surface_z in hydrostatic
+/// equilibrium with gravity gz (< 0); rho0 above the surface.
+NETSPH_HD Real hydrostatic_buffer_density(const TaitEos& eos, double gz, double surface_z,
+                                          double z) {
+  const double pressure = -static_cast<double>(eos.rho0) * gz * (surface_z - z);
+  return static_cast<Real>(pressure > 0 ? eos.density(pressure) : eos.rho0);
+}
+
+/// Velocity imposed in a buffer: `u` into the domain at an inlet, out of it at an outlet.
+NETSPH_HD Vec3f buffer_velocity(int axis, double inward, bool inlet, double u) {
+  Vec3d v{};
+  v[axis] = inward * (inlet ? u : -u);
+  return Vec3f(v);
+}
+
+/// The numbers of a zone the transitions need, as a plain struct a kernel can take.
+struct ZoneGeometry {
+  bool inlet = true;
+  int axis = 0;
+  double inward = 1, plane = 0, width = 0;
+  double surface_z = 0;
+};
+
+/// What happens to a particle at the start of a step (the rules above).
+enum class BufferTransition : std::uint8_t {
+  None,
+  ToFluid,           ///< a buffer particle crossed into the fluid
+  ToFluidAndCreate,  ///< ... at an inlet, below its surface: a new buffer particle behind it
+  Remove,            ///< a buffer particle left through the domain face
+  ToBuffer,          ///< a fluid particle entered a buffer
+};
+
+/// The transition of a particle of kind k at p; a buffer particle's zone is `group`. For
+/// ToBuffer, `zone` receives the zone entered (the first of `zones` whose buffer holds p).
+NETSPH_HD BufferTransition buffer_transition(const ZoneGeometry* zones, std::size_t nzones,
+                                             ParticleKind k, std::uint32_t group, const Vec3d& p,
+                                             std::uint32_t& zone) {
+  if (k == ParticleKind::Buffer) {
+    const ZoneGeometry& z = zones[group];
+    const double d = buffer_depth(z.axis, z.inward, z.plane, p);
+    if (d < 0) {
+      return z.inlet && p.z <= z.surface_z ? BufferTransition::ToFluidAndCreate
+                                           : BufferTransition::ToFluid;
+    }
+    return d > z.width ? BufferTransition::Remove : BufferTransition::None;
+  }
+  if (k == ParticleKind::Fluid) {
+    for (std::size_t i = 0; i < nzones; ++i) {
+      const double d = buffer_depth(zones[i].axis, zones[i].inward, zones[i].plane, p);
+      if (d >= 0 && d <= zones[i].width) {
+        zone = static_cast<std::uint32_t>(i);
+        return BufferTransition::ToBuffer;
+      }
+    }
+  }
+  return BufferTransition::None;
+}
+
+/// Where an inlet creates the buffer particle that replaces one entering the fluid at p: one
+/// buffer width behind it.
+NETSPH_HD Vec3d created_buffer_position(const ZoneGeometry& z, const Vec3d& p) {
+  Vec3d q = p;
+  q[z.axis] -= z.inward * z.width;
+  return q;
+}
 
 struct OpenBoundaryZone {
   std::string name;
@@ -37,7 +130,8 @@ struct OpenBoundaryZone {
   double surface_z = std::numeric_limits<double>::infinity();  ///< no particles created above
 
   /// Depth of p into the buffer: 0 at the interface, `width` at the domain face, < 0 in the fluid.
-  double depth(const Vec3d& p) const { return (plane - p[axis]) * inward; }
+  double depth(const Vec3d& p) const { return buffer_depth(axis, inward, plane, p); }
+  ZoneGeometry geometry() const { return {inlet, axis, inward, plane, width, surface_z}; }
   /// Unit vector into the domain.
   Vec3d inward_normal() const {
     Vec3d n{};

@@ -12,12 +12,6 @@ namespace netsph {
 
 namespace {
 
-void refuse(const std::string& what) {
-  throw Error("--backend cuda", "the CUDA backend does not support " + what +
-                                    " yet (it runs fluid, walls, bodies, nets, periodic axes and "
-                                    "shifting); use --backend cpu");
-}
-
 /// A device run of a case with the bodies and nets kept on the host: the step's
 /// advance_bodies hook runs the CPU solver's body and net stages (body_motion.hpp) on them.
 class CaseDeviceRun final : public DeviceRun {
@@ -99,8 +93,6 @@ class CaseDeviceRun final : public DeviceRun {
 }  // namespace
 
 DeviceSetup device_setup(const CaseSpec& spec, const Scene& scene) {
-  if (!spec.inlets.empty() || !spec.outlets.empty())
-    refuse("open boundaries ([[inlet]], [[outlet]])");
   // Probes are outputs, and a device run writes none yet (the caller downloads the particles).
   DeviceSetup s;
   s.model = scene.model;
@@ -130,6 +122,19 @@ DeviceSetup device_setup(const CaseSpec& spec, const Scene& scene) {
     d.shows_own_velocity = w.model == WallModel::Dbc || w.slip == WallSlip::WallVelocity;
     s.walls.push_back(d);
   }
+  for (const OpenBoundaryZone& z : scene.zones) {
+    DeviceZone d;
+    d.geo = z.geometry();
+    d.velocity_imposed = z.velocity_imposed;
+    d.speed = z.speed;
+    d.profile_begin = static_cast<std::uint32_t>(s.profile_z.size());
+    d.profile_count = static_cast<std::uint32_t>(z.profile_z.size());
+    d.density = z.density;
+    s.zones.push_back(d);
+    s.profile_z.insert(s.profile_z.end(), z.profile_z.begin(), z.profile_z.end());
+    s.profile_u.insert(s.profile_u.end(), z.profile_u.begin(), z.profile_u.end());
+  }
+  s.gz = spec.fluid.gravity.z;
   for (const RigidBody& b : scene.bodies) {
     DeviceBody d;
     d.state = b.state;

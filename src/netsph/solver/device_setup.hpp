@@ -10,15 +10,14 @@
 namespace netsph {
 
 /// The device step's constants for a case whose scene is `scene` (the case with its nets'
-/// knots as bodies: spec_with_net_knots). Throws netsph::Error naming the first feature of
-/// the case the device step does not support yet (open boundaries). Probes are ignored: a
-/// device run writes no outputs yet.
+/// knots as bodies: spec_with_net_knots). Probes are ignored: a device run writes no outputs
+/// yet (the caller downloads the particles).
 DeviceSetup device_setup(const CaseSpec& spec, const Scene& scene);
 
 enum class DeviceExecutor { Host, Cuda };
 
-/// Builds the case's scene and a device run of it. Throws netsph::Error for an unsupported
-/// case, and for DeviceExecutor::Cuda when netsph was built without CUDA or finds no device.
+/// Builds the case's scene and a device run of it. Throws netsph::Error for
+/// DeviceExecutor::Cuda when netsph was built without CUDA or finds no device.
 std::unique_ptr<DeviceRun> make_device_run(const CaseSpec& spec, DeviceExecutor exec);
 
 }  // namespace netsph

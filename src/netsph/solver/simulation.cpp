@@ -199,10 +199,8 @@ void Simulation::apply_open_boundary_state() {
     const OpenBoundaryZone& z = zones[p_.group[i]];
     if (z.velocity_imposed) p_.vel[i] = z.imposed_velocity(p_.pos[i]);
     if (z.density == BufferDensity::Reference) p_.rho[i] = eos.rho0;
-    if (z.density == BufferDensity::Hydrostatic) {
-      const double pressure = -static_cast<double>(eos.rho0) * gz * (z.surface_z - p_.pos[i].z);
-      p_.rho[i] = static_cast<Real>(pressure > 0 ? eos.density(pressure) : eos.rho0);
-    }
+    if (z.density == BufferDensity::Hydrostatic)
+      p_.rho[i] = hydrostatic_buffer_density(eos, gz, z.surface_z, p_.pos[i].z);
     if (!z.velocity_imposed || z.density == BufferDensity::Extrapolated) {
       ghost_targets_.push_back(i);
       ghost_points_.push_back(z.ghost_of(p_.pos[i]));

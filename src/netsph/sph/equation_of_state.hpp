@@ -45,7 +45,7 @@ struct TaitEos {
 
   /// rho such that pressure(rho) == p + p_background: p is the gauge pressure, as a
   /// hydrostatic column gives it (double: used to set initial states).
-  double density(double p) const {
+  NETSPH_HD double density(double p) const {
     return static_cast<double>(rho0) * std::pow(p / static_cast<double>(b) + 1.0, 1.0 / gamma);
   }
 };

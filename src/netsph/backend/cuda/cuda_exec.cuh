@@ -6,6 +6,7 @@
 
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
+#include <cub/device/device_scan.cuh>
 
 #include <cstdint>
 #include <string>
@@ -39,14 +40,17 @@ class DeviceBuffer {
   DeviceBuffer(const DeviceBuffer&) = delete;
   DeviceBuffer& operator=(const DeviceBuffer&) = delete;
   ~DeviceBuffer() { cudaFree(p_); }
+  /// Grows by half again at least, so that particles created a few at a time do not
+  /// reallocate every step; keeps the contents.
   void resize(std::size_t n) {
     if (n > cap_) {
+      const std::size_t cap = size_ > 0 && n < cap_ + cap_ / 2 ? cap_ + cap_ / 2 : n;
       T* q = nullptr;
-      cuda_check(cudaMalloc(&q, n * sizeof(T)), "cudaMalloc");
+      cuda_check(cudaMalloc(&q, cap * sizeof(T)), "cudaMalloc");
       if (size_ > 0)
         cuda_check(cudaMemcpy(q, p_, size_ * sizeof(T), cudaMemcpyDeviceToDevice), "resize");
       cudaFree(p_);
-      p_ = q, cap_ = n;
+      p_ = q, cap_ = cap;
     }
     size_ = n;
   }
@@ -106,6 +110,20 @@ struct CudaExec {
     T h{};
     cuda_check(cudaMemcpy(&h, out.data(), sizeof(T), cudaMemcpyDeviceToHost), "max (copy)");
     return h > T(0) ? h : T(0);
+  }
+
+  /// out[i] = in[0] + ... + in[i - 1]; returns the sum of all.
+  static std::size_t exclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n) {
+    if (n == 0) return 0;
+    std::size_t bytes = 0;
+    const int count = static_cast<int>(n);
+    cuda_check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, in, out, count), "scan (size)");
+    cuda_check(cub::DeviceScan::ExclusiveSum(temp(bytes).data(), bytes, in, out, count), "scan");
+    std::uint32_t last_in = 0, last_out = 0;
+    cuda_check(cudaMemcpy(&last_in, in + n - 1, sizeof(last_in), cudaMemcpyDeviceToHost), "scan");
+    cuda_check(cudaMemcpy(&last_out, out + n - 1, sizeof(last_out), cudaMemcpyDeviceToHost),
+               "scan");
+    return static_cast<std::size_t>(last_in) + last_out;
   }
 
   __device__ static void atomic_add(double* p, double v) { atomicAdd(p, v); }

@@ -8,10 +8,12 @@
 // sph/ and boundary/, as the CPU backend calls them.
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "netsph/backend/device/device_grid.hpp"
 #include "netsph/bodies/rigid_body.hpp"
 #include "netsph/boundary/mdbc.hpp"
+#include "netsph/boundary/open_boundary.hpp"
 #include "netsph/core/host_device.hpp"
 #include "netsph/sph/contact.hpp"
 #include "netsph/sph/fluid_model.hpp"
@@ -46,6 +48,16 @@ struct DeviceBody {
   bool mdbc = false;
   WallSlip slip = WallSlip::WallVelocity;
   bool shows_own_velocity = true;
+};
+
+/// An open boundary's buffer state rules (Simulation::apply_open_boundary_state); the
+/// profile, if any, is [profile_begin, profile_begin + profile_count) of the profile tables.
+struct DeviceZone {
+  ZoneGeometry geo;
+  bool velocity_imposed = true;
+  double speed = 0;
+  std::uint32_t profile_begin = 0, profile_count = 0;
+  BufferDensity density = BufferDensity::Extrapolated;
 };
 
 /// Fluid and contact force and torque on one body, summed over its particles (world frame,
@@ -260,6 +272,104 @@ NETSPH_HD void device_mdbc_particle(const DeviceGrid& g, const std::uint32_t* ce
   s.vel[i] = st.vel;
 }
 
+/// The open-boundary transition of particle i (boundary/open_boundary.cpp's rules, applied in
+/// place); create[i] = 1 when an inlet must create a buffer particle behind it, removed[i] = 1
+/// when it left through a face (its position becomes NaN, so the sort drops it).
+NETSPH_HD void device_transition_particle(const DeviceState& s, const ZoneGeometry* zones,
+                                          std::size_t nzones, std::uint32_t* create,
+                                          std::uint32_t* removed, std::uint32_t i) {
+  std::uint32_t entered = 0;
+  create[i] = 0, removed[i] = 0;
+  switch (buffer_transition(zones, nzones, s.kind[i], s.group[i], s.pos[i], entered)) {
+    case BufferTransition::None:
+      break;
+    case BufferTransition::ToFluidAndCreate:
+      create[i] = 1;
+      s.kind[i] = ParticleKind::Fluid;  // the group (its zone) is cleared by the creation
+      break;
+    case BufferTransition::ToFluid:
+      s.kind[i] = ParticleKind::Fluid;
+      s.group[i] = 0;
+      break;
+    case BufferTransition::Remove: {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      s.pos[i] = Vec3d(nan, nan, nan);
+      removed[i] = 1;
+      break;
+    }
+    case BufferTransition::ToBuffer:
+      s.kind[i] = ParticleKind::Buffer;
+      s.group[i] = entered;
+      break;
+  }
+}
+
+/// The buffer particle an inlet creates behind particle i (which entered the fluid), in slot
+/// `slot` with id `id`; then clears i's group.
+NETSPH_HD void device_create_buffer_particle(const DeviceState& s, const ZoneGeometry* zones,
+                                             std::uint32_t i, std::uint32_t slot,
+                                             std::uint32_t id) {
+  const std::uint32_t zone = s.group[i];
+  s.pos[slot] = created_buffer_position(zones[zone], s.pos[i]);
+  s.vel[slot] = s.vel[i];
+  s.rho[slot] = s.rho[i];
+  s.kind[slot] = ParticleKind::Buffer;
+  s.id[slot] = id;
+  s.group[slot] = zone;
+  s.ghost[slot] = Vec3f{};
+  s.group[i] = 0;
+}
+
+/// State of buffer particle i (Simulation::apply_open_boundary_state): imposed velocity,
+/// reference or hydrostatic density, and where the zone extrapolates, the ghost node's value
+/// over the fluid particles mirrored across the interface.
+template <class Kernel>
+NETSPH_HD void device_buffer_state_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
+                                            const DeviceState& s, const DeviceZone* zones,
+                                            const double* profile_z, const double* profile_u,
+                                            double gz, const FluidModel& m, std::uint32_t i) {
+  if (s.kind[i] != ParticleKind::Buffer) return;
+  const DeviceZone z = zones[s.group[i]];
+  const Vec3d p = s.pos[i];
+  if (z.velocity_imposed) {
+    const double u = inflow_speed(z.speed, profile_z + z.profile_begin, profile_u + z.profile_begin,
+                                  z.profile_count, p.z);
+    s.vel[i] = buffer_velocity(z.geo.axis, z.geo.inward, z.geo.inlet, u);
+  }
+  if (z.density == BufferDensity::Reference) s.rho[i] = m.eos.rho0;
+  if (z.density == BufferDensity::Hydrostatic)
+    s.rho[i] = hydrostatic_buffer_density(m.eos, gz, z.geo.surface_z, p.z);
+  if (z.velocity_imposed && z.density != BufferDensity::Extrapolated) return;
+  // The ghost node: p mirrored across the interface (OpenBoundaryZone::ghost_of).
+  const double depth = buffer_depth(z.geo.axis, z.geo.inward, z.geo.plane, p);
+  Vec3d ghost = p;
+  ghost[z.geo.axis] += z.geo.inward * (2 * depth);
+  const Vec3d point = g.wrapped(ghost);
+  GhostSums sums;
+  const std::uint32_t c = g.key_of(point);
+  if (c == g.sentinel()) return;
+  g.for_each_range(cell_begin, c, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
+    const Vec3d sh(shift);
+    for (std::uint32_t j = b0; j < b1; ++j) {
+      if (s.kind[j] != ParticleKind::Fluid) continue;
+      const Vec3f d(s.pos[j] + sh - point);
+      const Real r2 = d.x * d.x + d.y * d.y + d.z * d.z;
+      if (!(r2 < m.support2)) continue;
+      const Real r = std::sqrt(r2);
+      ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
+                       kernel_grad_factor<Kernel>(m.kernel, r), m.mass, s.rho[j], s.vel[j]);
+    }
+  });
+  const GhostValue gv = ghost_solve(sums, m.dims);
+  if (!gv.any) return;  // no fluid in reach: keep the previous state
+  if (z.density == BufferDensity::Extrapolated) {
+    // First-order extrapolation from the ghost node back to the buffer particle.
+    const Vec3d to_b = p - ghost;
+    s.rho[i] = static_cast<Real>(gv.first_order ? gv.rho + dot(gv.grad_rho, to_b) : gv.rho);
+  }
+  if (!z.velocity_imposed) s.vel[i] = Vec3f(gv.vel);
+}
+
 /// Contact acceleration of body particle i from the particles of other solids
 /// (backend/cpu/contact.cpp).
 NETSPH_HD void device_contact_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
@@ -311,8 +421,8 @@ struct DeviceStart {
 };
 
 /// Predictor (half step) of particle i; returns its displacement squared. Walls move with
-/// their start velocity; body particles integrate continuity only (their motion is the body's;
-/// backend/cpu/integrate.cpp).
+/// their start velocity, buffer particles with theirs; body particles integrate continuity
+/// only (their motion is the body's; backend/cpu/integrate.cpp).
 NETSPH_HD double device_predict_particle(const DeviceState& p, const DeviceStart& s,
                                          const DeviceRates& r, const DeviceWall* walls,
                                          const DeviceWallMotion* motion, const FluidModel& m,
@@ -326,6 +436,9 @@ NETSPH_HD double device_predict_particle(const DeviceState& p, const DeviceStart
     p.pos[i] = s.pos[i] + Vec3d(w.start) * (0.5 * dt);
     if (walls[p.group[i]].shows_own_velocity) p.vel[i] = w.half;
     p.rho[i] = clamp_boundary_density(symplectic_density_half(s.rho[i], r.drho[i], dt), m.eos.rho0);
+  } else if (k == ParticleKind::Buffer) {
+    // Buffer particles move with their imposed (or extrapolated) velocity, state kept.
+    p.pos[i] = s.pos[i] + Vec3d(s.vel[i]) * (0.5 * dt);
   } else if (k == ParticleKind::Body) {
     p.rho[i] = clamp_boundary_density(symplectic_density_half(s.rho[i], r.drho[i], dt), m.eos.rho0);
   }
@@ -357,6 +470,8 @@ NETSPH_HD bool device_correct_particle(const DeviceState& p, const DeviceStart& 
     if (walls[p.group[i]].shows_own_velocity) p.vel[i] = w.end;
     const Real rho_new = symplectic_density_full(s.rho[i], r.drho[i], p.rho[i], dt);
     p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);
+  } else if (k == ParticleKind::Buffer) {
+    p.pos[i] = s.pos[i] + Vec3d(s.vel[i]) * dt;
   } else if (k == ParticleKind::Body) {
     const Real rho_new = symplectic_density_full(s.rho[i], r.drho[i], p.rho[i], dt);
     p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);

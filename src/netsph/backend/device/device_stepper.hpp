@@ -3,17 +3,19 @@
 // (backend/cuda/cuda_exec.cuh) or, for tests without a GPU, the host (host_exec.hpp). The
 // sequence is Simulation::step's (solver/simulation.hpp) for the cases this version supports:
 //
-//   wrap periodic axes; sort by cell key (radix sort of keys, gather of every array);
-//   cell ranges; body particles placed; mDBC state of walls and bodies; view -> rates
+//   open-boundary transitions and new inlet particles; wrap periodic axes; sort by cell key (radix
+//   sort of keys, gather of every array); cell ranges; body particles placed; buffer state; mDBC
+//   state of walls and bodies; view -> rates
 //   (+ contacts) -> dt (max reductions); save the start; body loads -> bodies' predictor (on
 //   the host) -> predictor, body particles placed [re-sort if a particle moved past the grid
 //   skin]; view -> rates (+ shifting, contacts) -> body loads -> bodies' corrector ->
 //   corrector, body particles placed; non-finite check.
 //
-// Supported: fluid particles, walls (DBC or mDBC, any slip, moving), rigid bodies (fixed,
-// floating, prescribed; nets' knots through the host's knot-spring solver), contacts,
-// periodic axes, shifting, both kernels, both viscosity models, every density diffusion. Not
-// yet: open boundaries and probes; the setup refuses a case that has them.
+// Supported: fluid particles, walls (DBC or mDBC, any slip, moving), open boundaries (buffer
+// transitions, inlet particles created by a scan of flags, imposed or extrapolated buffer
+// state), rigid bodies (fixed, floating, prescribed; nets' knots through the host's
+// knot-spring solver), contacts, periodic axes, shifting, both kernels, both viscosity models,
+// every density diffusion. Not yet: outputs (probes, series): the caller downloads particles.
 //
 // Bodies and nets stay on the host: after each rates pass the step reduces every body's force
 // and torque on the device (one pass over particles, atomics per body), copies those 12
@@ -22,7 +24,8 @@
 //
 // Exec provides: Buffer<T> (resize, size, data, swap), for_each(n, f), sort_pairs(keys_in,
 // keys_out, vals_in, vals_out, n, key_bits), max_of(const T*, n), count_below(const uint32*,
-// n, bound), upload(Buffer<T>&, const T*, n), download(T*, const Buffer<T>&, n), and
+// n, bound), exclusive_scan(const uint32* in, uint32* out, n) -> total, upload(Buffer<T>&,
+// const T*, n), download(T*, const Buffer<T>&, n), and
 // atomic_add(double*, double) callable inside f. f must be a NETSPH_LAMBDA: on CUDA it runs on
 // the device.
 #include <algorithm>
@@ -58,7 +61,10 @@ struct DeviceSetup {
   std::vector<DeviceWall> walls;  ///< by wall index
   /// Velocity of wall w at time t (null: every wall is at rest).
   std::function<Vec3f(std::size_t w, double t)> wall_velocity;
-  std::vector<DeviceBody> bodies;                ///< by body index, with their initial states
+  std::vector<DeviceZone> zones;             ///< open boundaries: inlets, then outlets
+  std::vector<double> profile_z, profile_u;  ///< the zones' inflow profiles, concatenated
+  double gz = 0;                             ///< gravity's z component, m/s^2 (hydrostatic buffers)
+  std::vector<DeviceBody> bodies;            ///< by body index, with their initial states
   std::vector<Vec3f> body_offsets, body_ghosts;  ///< body frame, by DeviceBody::offset_base + k
   ContactModel contact;
   /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
@@ -75,7 +81,9 @@ struct DeviceStepReport {
   DeviceStepStatus status = DeviceStepStatus::Ok;
   TimeStepLimits dt_limits;
   double dt_floor = 0;
-  std::size_t lost = 0;  ///< particles dropped this step for leaving the grid
+  std::size_t lost = 0;     ///< particles dropped this step for leaving the grid
+  std::size_t created = 0;  ///< inlet buffer particles created this step
+  std::size_t removed = 0;  ///< buffer particles that left through a face this step
   bool resorted = false;
 };
 
@@ -100,6 +108,18 @@ class DeviceStepper {
     Exec::upload(group_, p.group.data(), n_);
     Exec::upload(ghost_, p.ghost.data(), n_);
     Exec::upload(walls_, s_.walls.data(), s_.walls.size());
+    if (!s_.zones.empty()) {
+      std::vector<ZoneGeometry> geo;
+      for (const DeviceZone& z : s_.zones) geo.push_back(z.geo);
+      Exec::upload(zones_, s_.zones.data(), s_.zones.size());
+      Exec::upload(zone_geo_, geo.data(), geo.size());
+      const double none = 0;  // a one-entry table keeps the pointers valid without profiles
+      const bool profiles = !s_.profile_z.empty();
+      Exec::upload(profile_z_, profiles ? s_.profile_z.data() : &none,
+                   profiles ? s_.profile_z.size() : 1);
+      Exec::upload(profile_u_, profiles ? s_.profile_u.data() : &none,
+                   profiles ? s_.profile_u.size() : 1);
+    }
     motion_host_.resize(s_.walls.size());
     Exec::upload(motion_, motion_host_.data(), motion_host_.size());
     if (has_bodies_) {
@@ -115,11 +135,15 @@ class DeviceStepper {
   /// Advances one symplectic step; the report says whether it completed.
   DeviceStepReport step() {
     DeviceStepReport rep;
+    // Open boundaries first: conversions use positions only, and the sort then places the
+    // created particles and drops the removed ones.
+    if (!s_.zones.empty()) open_boundaries(rep);
     const std::size_t before = n_;
     sort(false);
-    rep.lost = before - n_;
+    rep.lost = before - n_ - rep.removed;
     wall_motion(0.0);  // velocities at t for the boundary state
     place_bodies(false);
+    if (!s_.zones.empty()) buffer_state();
     mdbc();
     view(false);
     rates(false);
@@ -348,6 +372,56 @@ class DeviceStepper {
     return from_start ? std::sqrt(Exec::max_of(moved_.data(), n_)) : 0.0;
   }
 
+  /// Buffer transitions, then the inlets' new buffer particles appended in index order with
+  /// consecutive ids (as update_open_boundary_particles appends them).
+  void open_boundaries(DeviceStepReport& rep) {
+    const DeviceState st = state();
+    const ZoneGeometry* geo = zone_geo_.data();
+    const std::size_t nz = s_.zones.size();
+    std::uint32_t* create = keys_.data();  // free until the sort
+    std::uint32_t* removed = keys2_.data();
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      device_transition_particle(st, geo, nz, create, removed, i);
+    });
+    rep.removed = Exec::exclusive_scan(keys2_.data(), order2_.data(), n_);
+    const std::size_t created = Exec::exclusive_scan(keys_.data(), order_.data(), n_);
+    rep.created = created;
+    if (created == 0) return;
+    const std::size_t n = n_;
+    alloc(n + created);
+    const DeviceState grown = state();
+    const std::uint32_t* flag = keys_.data();
+    const std::uint32_t* offset = order_.data();
+    const std::uint32_t first_id = next_id_;
+    const auto base = static_cast<std::uint32_t>(n);
+    Exec::for_each(n, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      if (flag[i])
+        device_create_buffer_particle(grown, geo, i, base + offset[i], first_id + offset[i]);
+    });
+    n_ = n + created;
+    next_id_ += static_cast<std::uint32_t>(created);
+  }
+
+  void buffer_state() {
+    if (s_.model.kernel_type == KernelType::Wendland) return buffer_state_for<WendlandC2>();
+    buffer_state_for<CubicSpline>();
+  }
+
+  template <class K>
+  void buffer_state_for() {
+    const DeviceGrid g = s_.grid;
+    const std::uint32_t* begin = cell_begin_.data();
+    const DeviceState st = state();
+    const DeviceZone* zones = zones_.data();
+    const double* pz = profile_z_.data();
+    const double* pu = profile_u_.data();
+    const double gz = s_.gz;
+    const FluidModel m = s_.model;
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      device_buffer_state_particle<K>(g, begin, st, zones, pz, pu, gz, m, i);
+    });
+  }
+
   void contacts() {
     const DeviceGrid g = s_.grid;
     const std::uint32_t* begin = cell_begin_.data();
@@ -492,6 +566,9 @@ class DeviceStepper {
   Buffer<DeviceWall> walls_;
   Buffer<DeviceWallMotion> motion_;
   std::vector<DeviceWallMotion> motion_host_;
+  Buffer<DeviceZone> zones_;
+  Buffer<ZoneGeometry> zone_geo_;
+  Buffer<double> profile_z_, profile_u_;
   Buffer<DeviceBody> bodies_;
   Buffer<Vec3f> offsets_, body_ghosts_, contact_;
   Buffer<std::int32_t> solid_;

@@ -47,6 +47,17 @@ struct HostExec {
     *p += v;
   }
 
+  /// out[i] = in[0] + ... + in[i - 1]; returns the sum of all.
+  static std::size_t exclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n) {
+    std::uint32_t sum = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t v = in[i];
+      out[i] = sum;
+      sum += v;
+    }
+    return sum;
+  }
+
   /// How many of the sorted keys are below `bound`.
   static std::size_t count_below(const std::uint32_t* keys, std::size_t n, std::uint32_t bound) {
     return static_cast<std::size_t>(std::lower_bound(keys, keys + n, bound) - keys);
