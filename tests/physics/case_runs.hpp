@@ -2,6 +2,7 @@
 // Helpers for the physics tests: load a case from cases/ (with overrides), step it, and
 // measure fields the way a user would read them.
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,15 @@
 
 namespace netsph::test {
 
+/// cases/ of the source tree, or $NETSPH_CASES_DIR when set (a test binary carried to another
+/// machine, tools/gpu_bundle.sh).
+inline std::string cases_dir() {
+  const char* env = std::getenv("NETSPH_CASES_DIR");
+  return env && *env ? std::string(env) : std::string(NETSPH_CASES_DIR);
+}
+
 inline CaseSpec load_case(const std::string& name, const std::vector<std::string>& overrides = {}) {
-  return read_case_file(std::string(NETSPH_CASES_DIR) + "/" + name, overrides);
+  return read_case_file(cases_dir() + "/" + name, overrides);
 }
 
 /// Steps until the simulation time reaches t (the last step may pass it by less than dt).
