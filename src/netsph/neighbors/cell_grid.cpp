@@ -52,41 +52,21 @@ void CellGrid::configure(const Vec3d& lo, const Vec3d& hi, double support, doubl
                                  std::to_string(min_cell) + " m; shrink [domain] or raise dp");
   }
   begin_.assign(static_cast<std::size_t>(cell_count()) + 1, 0);
+  index_.origin = origin_;
+  index_.upper = upper_;
+  index_.inv_cell = inv_cell_;
+  index_.period = period_;
+  index_.dims = dims_;
+  for (int a = 0; a < 3; ++a) index_.n[a] = n_[a], index_.periodic[a] = periodic_[a];
 }
 
 std::int64_t CellGrid::cell_of(const Vec3d& p) const {
-  std::int64_t idx[3] = {0, 0, 0};
-  for (int a = 0; a < 3; ++a) {
-    if (dims_ == 2 && a == 1) continue;
-    const double f = (p[a] - origin_[a]) * inv_cell_[a];
-    if (!(f == f)) return -1;  // NaN
-    if (periodic_[a]) {
-      // Positions are wrapped before sorting; this only absorbs round-off at the ends.
-      idx[a] = std::clamp(static_cast<std::int64_t>(std::floor(f)), std::int64_t{0},
-                          static_cast<std::int64_t>(n_[a] - 1));
-    } else {
-      if (!(f >= 0 && f < n_[a])) return -1;
-      idx[a] = static_cast<std::int64_t>(f);
-    }
-  }
-  return idx[0] + n_[0] * (idx[1] + static_cast<std::int64_t>(n_[1]) * idx[2]);
+  const std::uint32_t key = index_.key_of(p);
+  return key == index_.sentinel() ? -1 : static_cast<std::int64_t>(key);
 }
 
 Vec3d CellGrid::wrapped(const Vec3d& p) const {
-  Vec3d q = p;
-  for (int a = 0; a < 3; ++a) {
-    if (!periodic_[a]) continue;
-    const double lo = origin_[a], hi = upper_[a], len = period_[a];
-    double x = p[a];
-    if (x >= lo && x < hi) continue;
-    x = lo + std::fmod(x - lo, len);
-    // Round-off can leave x a last bit outside [lo, hi): fold it back explicitly.
-    if (x < lo) x += len;
-    if (x >= hi) x -= len;
-    if (x < lo) x = lo;
-    q[a] = x;
-  }
-  return q;
+  return index_.wrapped(p);
 }
 
 Vec3d CellGrid::wrap_shift(const Vec3d& p) const {
@@ -132,70 +112,12 @@ void CellGrid::sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& orde
   begin_[0] = 0;
 }
 
-namespace {
-
-/// Neighbouring index of i + d on an axis: clamped (returns false outside) or wrapped with
-/// the period shift the neighbours' positions need.
-struct AxisStep {
-  int index;
-  double shift;
-};
-
-}  // namespace
-
 int CellGrid::neighbour_ranges(std::int64_t c, NeighbourRanges& out) const {
-  const std::int64_t nx = n_[0], nxy = static_cast<std::int64_t>(n_[0]) * n_[1];
-  const int ic[3] = {static_cast<int>(c % nx), static_cast<int>((c / nx) % n_[1]),
-                     static_cast<int>(c / nxy)};
-  // Rows of cells along y and z (with their wrap shift), and the x span.
-  auto rows = [&](int a, AxisStep* steps) {
-    int count = 0;
-    const int r = (dims_ == 2 && a == 1) ? 0 : kSearchCells;
-    for (int d = -r; d <= r; ++d) {
-      int i = ic[a] + d;
-      double shift = 0;
-      if (periodic_[a]) {
-        if (i < 0) i += n_[a], shift = -period_[a];
-        if (i >= n_[a]) i -= n_[a], shift = period_[a];
-      } else if (i < 0 || i >= n_[a]) {
-        continue;
-      }
-      steps[count++] = {i, shift};
-    }
-    return count;
-  };
-  AxisStep ys[2 * kSearchCells + 1], zs[2 * kSearchCells + 1];
-  const int ny = rows(1, ys), nz = rows(2, zs);
-
-  // x: one contiguous run, split in two where it crosses a periodic boundary.
-  struct XRun {
-    int lo, hi;
-    double shift;
-  } xr[3];
-  int nxr = 0;
-  const int x0 = ic[0] - kSearchCells, x1 = ic[0] + kSearchCells;
-  if (periodic_[0]) {
-    if (x0 < 0) xr[nxr++] = {x0 + n_[0], n_[0] - 1, -period_[0]};
-    xr[nxr++] = {std::max(x0, 0), std::min(x1, n_[0] - 1), 0.0};
-    if (x1 >= n_[0]) xr[nxr++] = {0, x1 - n_[0], period_[0]};
-  } else {
-    xr[nxr++] = {std::max(x0, 0), std::min(x1, n_[0] - 1), 0.0};
-  }
-
   int count = 0;
-  for (int kz = 0; kz < nz; ++kz) {
-    for (int ky = 0; ky < ny; ++ky) {
-      const std::int64_t row = nx * ys[ky].index + nxy * zs[kz].index;
-      for (int k = 0; k < nxr; ++k) {
-        const std::uint32_t b = begin_[row + xr[k].lo], e = begin_[row + xr[k].hi + 1];
-        if (b < e) {
-          out[count++] = {b, e,
-                          Vec3f(static_cast<float>(xr[k].shift), static_cast<float>(ys[ky].shift),
-                                static_cast<float>(zs[kz].shift))};
-        }
-      }
-    }
-  }
+  index_.for_each_range(begin_.data(), static_cast<std::uint32_t>(c),
+                        [&](std::uint32_t b, std::uint32_t e, Vec3f shift) {
+                          out[static_cast<std::size_t>(count++)] = {b, e, shift};
+                        });
   return count;
 }
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "netsph/core/vec3.hpp"
+#include "netsph/neighbors/grid_index.hpp"
 
 namespace netsph {
 
@@ -42,7 +43,7 @@ using NeighbourRanges = std::array<NeighbourRange, 50>;
 
 class CellGrid {
  public:
-  static constexpr int kSearchCells = 2;  ///< R: cells searched on each side
+  static constexpr int kSearchCells = GridIndex::kSearchCells;  ///< R: cells searched on each side
 
   /// Lays the grid over the box [lo, hi] (the domain). `support` is the kernel radius;
   /// `skin` the relative margin (cell = support (1 + skin) / R). dims = 2 uses one y cell.
@@ -78,6 +79,8 @@ class CellGrid {
   IndexRange cell_range(std::int64_t c) const { return {begin_[c], begin_[c + 1]}; }
   const std::array<int, 3>& dims() const { return n_; }
   const Vec3d& cell_size() const { return cell_; }
+  /// The grid's numbers, for kernels (grid_index.hpp).
+  const GridIndex& index() const { return index_; }
   const Vec3d& origin() const { return origin_; }
   const Vec3d& period() const { return period_; }  ///< domain length on periodic axes, else 0
   bool periodic(int axis) const { return periodic_[axis]; }
@@ -100,6 +103,7 @@ class CellGrid {
   Vec3d inv_cell_{1, 1, 1};
   Vec3d period_{};
   std::array<bool, 3> periodic_{};
+  GridIndex index_;
   double max_displacement_ = 0;
   std::array<int, 3> n_{1, 1, 1};
   int dims_ = 3;

@@ -100,16 +100,7 @@ DeviceSetup device_setup(const CaseSpec& spec, const Scene& scene) {
   grid.configure(scene.domain_min, scene.domain_max, s.model.support, kGridSkin, s.model.dims,
                  spec.domain.periodic);
   s.max_displacement = grid.max_displacement();
-  DeviceGrid& g = s.grid;
-  g.origin = grid.origin();
-  g.upper = scene.domain_max;
-  g.period = grid.period();
-  g.dims = s.model.dims;
-  for (int a = 0; a < 3; ++a) {
-    g.n[a] = grid.dims()[static_cast<std::size_t>(a)];
-    g.periodic[a] = grid.periodic(a);
-  }
-  g.inv_cell = {1.0 / grid.cell_size().x, 1.0 / grid.cell_size().y, 1.0 / grid.cell_size().z};
+  s.grid = grid.index();
   s.cfl = spec.simulation.cfl;
   s.dt_max = spec.simulation.dt_max;
   s.dt_min = spec.simulation.dt_min;

@@ -10,11 +10,11 @@
 #include <cstdint>
 #include <limits>
 
-#include "netsph/backend/device/device_grid.hpp"
 #include "netsph/bodies/rigid_body.hpp"
 #include "netsph/boundary/mdbc.hpp"
 #include "netsph/boundary/open_boundary.hpp"
 #include "netsph/core/host_device.hpp"
+#include "netsph/neighbors/grid_index.hpp"
 #include "netsph/sph/contact.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/ghost_interpolation.hpp"
@@ -136,7 +136,7 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
 /// Rates of particle a: fluid particles sum every neighbour (fluid_pair_rates), wall particles
 /// the fluid ones (boundary_pair_rates), as backend/cpu/rates.cpp.
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
-NETSPH_HD void device_rates_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
+NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                      const std::uint32_t* keys, const ParticleKind* kind,
                                      const DeviceView& v, const FluidModel& m,
                                      const DeviceRates& out, std::uint32_t a) {
@@ -220,11 +220,39 @@ NETSPH_HD void device_rates_particle(const DeviceGrid& g, const std::uint32_t* c
   }
 }
 
+/// The ghost-node sums at `point` (wrapped into periodic axes first) over the fluid and, unless
+/// `fluid_only`, buffer particles within the support (backend/cpu/ghost_pass.hpp's
+/// ghost_value_at); empty outside the grid.
+template <class Kernel>
+NETSPH_HD GhostSums device_ghost_sums(const GridIndex& g, const std::uint32_t* cell_begin,
+                                      const DeviceState& s, const FluidModel& m, const Vec3d& at,
+                                      bool fluid_only) {
+  GhostSums sums;
+  const Vec3d point = g.wrapped(at);
+  const std::uint32_t c = g.key_of(point);
+  if (c == g.sentinel()) return sums;
+  g.for_each_range(cell_begin, c, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
+    const Vec3d sh(shift);
+    for (std::uint32_t j = b0; j < b1; ++j) {
+      const ParticleKind kj = s.kind[j];
+      if (kj == ParticleKind::Wall || kj == ParticleKind::Body) continue;
+      if (fluid_only && kj != ParticleKind::Fluid) continue;
+      const Vec3f d(s.pos[j] + sh - point);
+      const Real r2 = d.x * d.x + d.y * d.y + d.z * d.z;
+      if (!(r2 < m.support2)) continue;
+      const Real r = std::sqrt(r2);
+      ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
+                       kernel_grad_factor<Kernel>(m.kernel, r), m.mass, s.rho[j], s.vel[j]);
+    }
+  });
+  return sums;
+}
+
 /// mDBC state of wall or body particle i (Simulation::apply_mdbc): the ghost node's
 /// first-order value over the fluid (and buffer) particles in reach, extrapolated back. Walls
 /// without a ghost (DBC) show their own velocity.
 template <class Kernel>
-NETSPH_HD void device_mdbc_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
+NETSPH_HD void device_mdbc_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                     const DeviceState& s, const DeviceWall* walls,
                                     const DeviceWallMotion* motion, const DeviceBody* bodies,
                                     const FluidModel& m, std::uint32_t i) {
@@ -248,24 +276,8 @@ NETSPH_HD void device_mdbc_particle(const DeviceGrid& g, const std::uint32_t* ce
     slip = b.slip;
     v_solid = Vec3f(rigid_point_velocity(b.state, s.pos[i] - b.state.com));
   }
-  const Vec3d point = g.wrapped(s.pos[i] + Vec3d(off));
-  GhostSums sums;
-  const std::uint32_t c = g.key_of(point);
-  if (c != g.sentinel()) {
-    g.for_each_range(cell_begin, c, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
-      const Vec3d sh(shift);
-      for (std::uint32_t j = b0; j < b1; ++j) {
-        const ParticleKind kj = s.kind[j];
-        if (kj == ParticleKind::Wall || kj == ParticleKind::Body) continue;
-        const Vec3f d(s.pos[j] + sh - point);
-        const Real r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-        if (!(r2 < m.support2)) continue;
-        const Real r = std::sqrt(r2);
-        ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
-                         kernel_grad_factor<Kernel>(m.kernel, r), m.mass, s.rho[j], s.vel[j]);
-      }
-    });
-  }
+  const GhostSums sums = device_ghost_sums<Kernel>(g, cell_begin, s, m, s.pos[i] + Vec3d(off),
+                                                   /*fluid_only=*/false);
   const GhostValue gv = ghost_solve(sums, m.dims);
   const WallState st = mdbc_wall_state(gv, off, m.eos.rho0, slip, v_solid);
   s.rho[i] = st.rho;
@@ -324,7 +336,7 @@ NETSPH_HD void device_create_buffer_particle(const DeviceState& s, const ZoneGeo
 /// reference or hydrostatic density, and where the zone extrapolates, the ghost node's value
 /// over the fluid particles mirrored across the interface.
 template <class Kernel>
-NETSPH_HD void device_buffer_state_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
+NETSPH_HD void device_buffer_state_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                             const DeviceState& s, const DeviceZone* zones,
                                             const double* profile_z, const double* profile_u,
                                             double gz, const FluidModel& m, std::uint32_t i) {
@@ -344,22 +356,7 @@ NETSPH_HD void device_buffer_state_particle(const DeviceGrid& g, const std::uint
   const double depth = buffer_depth(z.geo.axis, z.geo.inward, z.geo.plane, p);
   Vec3d ghost = p;
   ghost[z.geo.axis] += z.geo.inward * (2 * depth);
-  const Vec3d point = g.wrapped(ghost);
-  GhostSums sums;
-  const std::uint32_t c = g.key_of(point);
-  if (c == g.sentinel()) return;
-  g.for_each_range(cell_begin, c, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
-    const Vec3d sh(shift);
-    for (std::uint32_t j = b0; j < b1; ++j) {
-      if (s.kind[j] != ParticleKind::Fluid) continue;
-      const Vec3f d(s.pos[j] + sh - point);
-      const Real r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-      if (!(r2 < m.support2)) continue;
-      const Real r = std::sqrt(r2);
-      ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
-                       kernel_grad_factor<Kernel>(m.kernel, r), m.mass, s.rho[j], s.vel[j]);
-    }
-  });
+  const GhostSums sums = device_ghost_sums<Kernel>(g, cell_begin, s, m, ghost, /*fluid_only=*/true);
   const GhostValue gv = ghost_solve(sums, m.dims);
   if (!gv.any) return;  // no fluid in reach: keep the previous state
   if (z.density == BufferDensity::Extrapolated) {
@@ -372,7 +369,7 @@ NETSPH_HD void device_buffer_state_particle(const DeviceGrid& g, const std::uint
 
 /// Contact acceleration of body particle i from the particles of other solids
 /// (backend/cpu/contact.cpp).
-NETSPH_HD void device_contact_particle(const DeviceGrid& g, const std::uint32_t* cell_begin,
+NETSPH_HD void device_contact_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                        const std::uint32_t* keys, const ParticleKind* kind,
                                        const DeviceView& v, const ContactModel& model,
                                        Vec3f* contact, std::uint32_t a) {

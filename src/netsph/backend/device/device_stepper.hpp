@@ -36,8 +36,8 @@
 #include <utility>
 #include <vector>
 
-#include "netsph/backend/device/device_grid.hpp"
 #include "netsph/backend/device/device_kernels.hpp"
+#include "netsph/neighbors/grid_index.hpp"
 #include "netsph/sph/time_step.hpp"
 
 #if defined(__CUDACC__)
@@ -51,7 +51,7 @@ namespace netsph {
 /// What a device step needs from the case (solver/device_setup.cpp builds it).
 struct DeviceSetup {
   FluidModel model;
-  DeviceGrid grid;
+  GridIndex grid;
   double max_displacement = 0;  ///< CellGrid::max_displacement()
   double cfl = 0.2;
   double dt_max = 0;  ///< 0: none
@@ -262,7 +262,7 @@ class DeviceStepper {
   /// Wraps periodic axes, sorts every array by cell and rebuilds the cell table; drops the
   /// particles outside the grid. Mid-step (after the predictor) the step-start arrays move too.
   void sort(bool mid_step) {
-    const DeviceGrid g = s_.grid;
+    const GridIndex g = s_.grid;
     const DeviceState st = state();
     const DeviceStart ss = start();
     std::uint32_t* keys = keys_.data();
@@ -319,7 +319,7 @@ class DeviceStepper {
 
   template <class K>
   void mdbc_for() {
-    const DeviceGrid g = s_.grid;
+    const GridIndex g = s_.grid;
     const std::uint32_t* begin = cell_begin_.data();
     const DeviceState st = state();
     const DeviceWall* walls = walls_.data();
@@ -409,7 +409,7 @@ class DeviceStepper {
 
   template <class K>
   void buffer_state_for() {
-    const DeviceGrid g = s_.grid;
+    const GridIndex g = s_.grid;
     const std::uint32_t* begin = cell_begin_.data();
     const DeviceState st = state();
     const DeviceZone* zones = zones_.data();
@@ -423,7 +423,7 @@ class DeviceStepper {
   }
 
   void contacts() {
-    const DeviceGrid g = s_.grid;
+    const GridIndex g = s_.grid;
     const std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* keys = keys_.data();
     const ParticleKind* kind = kind_.data();
@@ -493,7 +493,7 @@ class DeviceStepper {
 
   template <class K, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
   void rates_launch() {
-    const DeviceGrid g = s_.grid;
+    const GridIndex g = s_.grid;
     const std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* keys = keys_.data();
     const ParticleKind* kind = kind_.data();

@@ -1,10 +1,11 @@
 #pragma once
-// The cell grid as the device-shaped step sees it: a plain struct of numbers that kernels take
-// by value, and the host/device functions over it. It is the same grid as neighbors/cell_grid
-// (CellGrid::configure sets the cell size, the skin and the periodic stretch; to_device_grid
-// copies them), so both backends find the same candidates in the same order: cells sorted with
-// x fastest, searched kSearchCells cells on each side, each row of cells one index range, a
-// row split in two where it crosses a periodic x boundary.
+// The numbers of a cell grid as a plain struct that kernels take by value, and the
+// host/device functions over it: the cell of a position, wrapping into periodic axes, and the
+// candidate ranges of a cell. CellGrid (cell_grid.hpp) sets them up (cell size, skin,
+// periodic stretch) and answers its own queries through them, and the device-shaped step
+// (backend/device/) takes a copy, so both backends find the same candidates in the same order:
+// cells sorted with x fastest, searched kSearchCells cells on each side, each row of cells one
+// index range, a row split in two where it crosses a periodic x boundary.
 //
 // Sorting is by key: the cell index, or `sentinel()` for a particle outside the grid (NaN, or
 // past a non-periodic face), which puts the particles to drop at the end of the order.
@@ -17,7 +18,7 @@
 
 namespace netsph {
 
-struct DeviceGrid {
+struct GridIndex {
   static constexpr int kSearchCells = 2;  ///< CellGrid::kSearchCells
   Vec3d origin{};
   Vec3d upper{};
