@@ -11,10 +11,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <unordered_map>
 
 #include "case_runs.hpp"
-#include "netsph/solver/device_setup.hpp"
+#include "netsph/io/checkpoint_file.hpp"
+#include "netsph/solver/runner.hpp"
+
+#include <nlohmann/json.hpp>
 #if defined(NETSPH_HAVE_CUDA)
 #include "netsph/backend/cuda/cuda_runtime_info.hpp"
 #endif
@@ -32,26 +37,27 @@ struct Difference {
 };
 
 Difference compare(const std::string& name, const std::vector<std::string>& overrides, int steps,
-                   DeviceExecutor exec) {
+                   StepBackend backend) {
   const CaseSpec spec = test::load_case(name, overrides);
   Simulation cpu(spec);
-  const std::unique_ptr<DeviceRun> dev = make_device_run(spec, exec);
+  Simulation dev(spec, backend);
   Difference d;
   for (int s = 0; s < steps; ++s) {
     cpu.step();
-    const DeviceStepReport r = dev->step();
-    EXPECT_EQ(r.status, DeviceStepStatus::Ok) << "step " << s;
-    d.dt = std::max(d.dt, std::fabs(r.dt_limits.dt / cpu.last_dt() - 1));
+    dev.step();
+    d.dt = std::max(d.dt, std::fabs(dev.last_dt() / cpu.last_dt() - 1));
   }
-  EXPECT_NEAR(dev->time(), cpu.time(), 1e-5 * cpu.time());
-  ParticleSet q;
-  dev->download(q);
+  EXPECT_NEAR(dev.time(), cpu.time(), 1e-5 * cpu.time());
+  EXPECT_EQ(dev.diagnostics().open.created, cpu.diagnostics().open.created);
+  EXPECT_EQ(dev.diagnostics().open.removed, cpu.diagnostics().open.removed);
+  const ParticleSet& q = dev.particles();
   const ParticleSet& p = cpu.particles();
   EXPECT_EQ(q.size(), p.size());
   std::unordered_map<std::uint32_t, std::size_t> where;
   for (std::size_t i = 0; i < q.size(); ++i) where[q.id[i]] = i;
   double vmax = 1e-3;
   for (const Vec3f& v : p.vel) vmax = std::max(vmax, static_cast<double>(norm(v)));
+  EXPECT_NEAR(dev.diagnostics().max_speed, cpu.diagnostics().max_speed, 1e-3 * vmax);
   const double dp = spec.simulation.dp;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto it = where.find(p.id[i]);
@@ -66,14 +72,13 @@ Difference compare(const std::string& name, const std::vector<std::string>& over
     d.rho = std::max(d.rho, std::fabs(static_cast<double>(p.rho[i] - q.rho[j])) / p.rho[i]);
   }
   const auto& bodies = cpu.bodies();
-  EXPECT_EQ(bodies.size(), dev->body_states().size());
+  EXPECT_EQ(bodies.size(), dev.bodies().size());
   double fmax = 1e-12;
   for (const RigidBody& b : bodies) fmax = std::max(fmax, norm(b.fluid_force));
-  for (std::size_t b = 0; b < bodies.size() && b < dev->body_states().size(); ++b) {
-    d.body_pos = std::max(d.body_pos, norm(bodies[b].state.com - dev->body_states()[b].com) / dp);
-    const double* f = dev->body_loads()[b].f;
+  for (std::size_t b = 0; b < bodies.size() && b < dev.bodies().size(); ++b) {
+    d.body_pos = std::max(d.body_pos, norm(bodies[b].state.com - dev.bodies()[b].state.com) / dp);
     d.body_force =
-        std::max(d.body_force, norm(bodies[b].fluid_force - Vec3d(f[0], f[1], f[2])) / fmax);
+        std::max(d.body_force, norm(bodies[b].fluid_force - dev.bodies()[b].fluid_force) / fmax);
   }
   return d;
 }
@@ -103,15 +108,15 @@ const std::vector<std::string> kDamBreak3D = {
     "wall.0.layers=3", "fluid.shifting={model=\"fickian\"}"};
 
 TEST(DeviceParity, HostDamBreak2DMatchesTheCpuBackend) {
-  expect_parity(compare("dambreak2d.toml", kDamBreak2D, 200, DeviceExecutor::Host));
+  expect_parity(compare("dambreak2d.toml", kDamBreak2D, 200, StepBackend::HostDevice));
 }
 
 TEST(DeviceParity, HostPoiseuilleMatchesTheCpuBackend) {
-  expect_parity(compare("poiseuille2d.toml", kPoiseuille, 200, DeviceExecutor::Host));
+  expect_parity(compare("poiseuille2d.toml", kPoiseuille, 200, StepBackend::HostDevice));
 }
 
 TEST(DeviceParity, HostDamBreak3DWithMdbcAndShiftingMatchesTheCpuBackend) {
-  expect_parity(compare("dambreak3d.toml", kDamBreak3D, 40, DeviceExecutor::Host));
+  expect_parity(compare("dambreak3d.toml", kDamBreak3D, 40, StepBackend::HostDevice));
 }
 
 // A wall moving at constant speed, periodic x, mDBC no-slip mirrors.
@@ -125,36 +130,100 @@ const std::vector<std::string> kBoxOnFloor = {"simulation.dp=0.02",
 const std::vector<std::string> kThinPlate = {};
 
 TEST(DeviceParity, HostCouetteWithAMovingWallMatchesTheCpuBackend) {
-  expect_parity(compare("couette2d.toml", kCouette, 200, DeviceExecutor::Host));
+  expect_parity(compare("couette2d.toml", kCouette, 200, StepBackend::HostDevice));
 }
 
 TEST(DeviceParity, HostFloatingBoxMatchesTheCpuBackend) {
-  expect_parity(compare("floating_box2d.toml", kFloatingBox, 200, DeviceExecutor::Host));
+  expect_parity(compare("floating_box2d.toml", kFloatingBox, 200, StepBackend::HostDevice));
 }
 
 TEST(DeviceParity, HostBoxOnTheFloorWithContactsMatchesTheCpuBackend) {
-  expect_parity(compare("sinking_box2d.toml", kBoxOnFloor, 200, DeviceExecutor::Host));
+  expect_parity(compare("sinking_box2d.toml", kBoxOnFloor, 200, StepBackend::HostDevice));
 }
 
 TEST(DeviceParity, HostFixedThinPlateMatchesTheCpuBackend) {
-  expect_parity(compare("thin_plate_leak2d.toml", kThinPlate, 100, DeviceExecutor::Host));
+  expect_parity(compare("thin_plate_leak2d.toml", kThinPlate, 100, StepBackend::HostDevice));
 }
 
 // Open boundaries: a 2D channel with an inlet and an outlet buffer (particles created and
 // removed every few steps), shifting.
 TEST(DeviceParity, HostOpenChannelMatchesTheCpuBackend) {
-  expect_parity(compare("channel2d.toml", {}, 300, DeviceExecutor::Host));
+  expect_parity(compare("channel2d.toml", {}, 300, StepBackend::HostDevice));
 }
 
 // A parabolic inflow profile and a fixed cylinder (the DFG benchmark).
 TEST(DeviceParity, HostDfgCylinderMatchesTheCpuBackend) {
-  expect_parity(compare("dfg_cylinder2d.toml", {"simulation.dp=0.01"}, 100, DeviceExecutor::Host));
+  expect_parity(
+      compare("dfg_cylinder2d.toml", {"simulation.dp=0.01"}, 100, StepBackend::HostDevice));
 }
 
 // A coupled net: a knot tethered by one twine in a duct with an inlet and an outlet, shifting
 // on (the bodies and the knot-spring solver on the host, their particles on the device).
 TEST(DeviceParity, HostCoupledNetMatchesTheCpuBackend) {
-  expect_parity(compare("net_tethered_knot.toml", {}, 40, DeviceExecutor::Host));
+  expect_parity(compare("net_tethered_knot.toml", {}, 40, StepBackend::HostDevice));
+}
+
+// The whole run on the device step: outputs (snapshots, series, probes, nets, summary.json)
+// written from particles copied back on demand, the same as the CPU run's; and a run continued
+// from a checkpoint restarts the device step where it stopped.
+nlohmann::json run_summary(StepBackend backend, const std::string& folder) {
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/good/plot_smoke.toml", {});
+  Simulation sim(spec, backend);
+  RunOptions opt;
+  opt.out_dir = std::filesystem::temp_directory_path() / folder;
+  opt.progress = false;
+  std::filesystem::remove_all(opt.out_dir);
+  const RunReport report = run_simulation(sim, opt);
+  EXPECT_EQ(report.status, "completed");
+  std::ifstream in(opt.out_dir / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+TEST(DeviceParity, HostDeviceRunWritesTheOutputsOfTheCpuRun) {
+  const nlohmann::json a = run_summary(StepBackend::Cpu, "netsph_device_run_cpu");
+  const nlohmann::json b = run_summary(StepBackend::HostDevice, "netsph_device_run_dev");
+  EXPECT_EQ(a["outputs"]["snapshots"], b["outputs"]["snapshots"]);
+  EXPECT_EQ(a["time"]["steps"], b["time"]["steps"]);
+  const auto rel = [](double x, double y) {
+    return std::fabs(x - y) / std::max(std::fabs(x), 1e-12);
+  };
+  const nlohmann::json& na = a["nets"][0];
+  const nlohmann::json& nb = b["nets"][0];
+  EXPECT_LT(rel(na["mean_max_tension_N"], nb["mean_max_tension_N"]), 1e-5);
+  EXPECT_LT(rel(na["mean_max_deflection_m"], nb["mean_max_deflection_m"]), 1e-5);
+  ASSERT_EQ(a["probes"].size(), b["probes"].size());
+  for (std::size_t k = 0; k < a["probes"].size(); ++k) {
+    if (!a["probes"][k].contains("mean_ux_m_s")) continue;
+    EXPECT_LT(rel(a["probes"][k]["mean_ux_m_s"], b["probes"][k]["mean_ux_m_s"]), 1e-5)
+        << a["probes"][k]["name"];
+  }
+}
+
+TEST(DeviceParity, HostDeviceRunContinuesFromACheckpoint) {
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/good/plot_smoke.toml", {});
+  Simulation whole(spec, StepBackend::HostDevice);
+  for (int i = 0; i < 20; ++i) whole.step();
+  CheckpointData saved;
+  whole.save_state(saved);
+  for (int i = 0; i < 20; ++i) whole.step();
+  Simulation resumed(spec, StepBackend::HostDevice);
+  resumed.restore_state(saved);
+  for (int i = 0; i < 20; ++i) resumed.step();
+  EXPECT_EQ(resumed.steps(), 40);
+  EXPECT_NEAR(resumed.time(), whole.time(), 1e-12);
+  const ParticleSet& p = whole.particles();
+  const ParticleSet& q = resumed.particles();
+  ASSERT_EQ(p.size(), q.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(p.id[i], q.id[i]);
+    worst = std::max(worst, norm(p.pos[i] - q.pos[i]));
+  }
+  // Float sums over the same particles in the same order; the body sums use atomics, whose
+  // order may differ: round-off only.
+  EXPECT_LT(worst / spec.simulation.dp, 1e-5);
 }
 
 /// Skips the calling test unless a CUDA device is usable.
@@ -174,42 +243,42 @@ std::string gpu_unavailable() {
 
 TEST(DeviceParity, CudaDamBreak2DMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("dambreak2d.toml", kDamBreak2D, 200, DeviceExecutor::Cuda));
+  expect_parity(compare("dambreak2d.toml", kDamBreak2D, 200, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaPoiseuilleMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("poiseuille2d.toml", kPoiseuille, 200, DeviceExecutor::Cuda));
+  expect_parity(compare("poiseuille2d.toml", kPoiseuille, 200, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaDamBreak3DWithMdbcAndShiftingMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("dambreak3d.toml", kDamBreak3D, 40, DeviceExecutor::Cuda));
+  expect_parity(compare("dambreak3d.toml", kDamBreak3D, 40, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaCouetteWithAMovingWallMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("couette2d.toml", kCouette, 200, DeviceExecutor::Cuda));
+  expect_parity(compare("couette2d.toml", kCouette, 200, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaFloatingBoxMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("floating_box2d.toml", kFloatingBox, 200, DeviceExecutor::Cuda));
+  expect_parity(compare("floating_box2d.toml", kFloatingBox, 200, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaCoupledNetMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("net_tethered_knot.toml", {}, 40, DeviceExecutor::Cuda));
+  expect_parity(compare("net_tethered_knot.toml", {}, 40, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaOpenChannelMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("channel2d.toml", {}, 300, DeviceExecutor::Cuda));
+  expect_parity(compare("channel2d.toml", {}, 300, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaDfgCylinderMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("dfg_cylinder2d.toml", {"simulation.dp=0.01"}, 100, DeviceExecutor::Cuda));
+  expect_parity(compare("dfg_cylinder2d.toml", {"simulation.dp=0.01"}, 100, StepBackend::Cuda));
 }
 
 // Without a usable device the CUDA run is refused with the reason and the way out, never a
@@ -217,7 +286,7 @@ TEST(DeviceParity, CudaDfgCylinderMatchesTheCpuBackend) {
 TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {
   if (gpu_unavailable().empty()) GTEST_SKIP() << "a CUDA device is present";
   try {
-    make_device_run(test::load_case("dambreak2d.toml", kDamBreak2D), DeviceExecutor::Cuda);
+    Simulation sim(test::load_case("dambreak2d.toml", kDamBreak2D), StepBackend::Cuda);
     FAIL() << "a CUDA run was made without a device";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("--backend cpu"), std::string::npos) << e.what();
@@ -226,7 +295,7 @@ TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {
 
 TEST(DeviceParity, CudaBoxOnTheFloorWithContactsMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
-  expect_parity(compare("sinking_box2d.toml", kBoxOnFloor, 200, DeviceExecutor::Cuda));
+  expect_parity(compare("sinking_box2d.toml", kBoxOnFloor, 200, StepBackend::Cuda));
 }
 
 }  // namespace

@@ -11,7 +11,6 @@
 
 #include "netsph/app/commands.hpp"
 #include "netsph/core/error.hpp"
-#include "netsph/solver/device_setup.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {
@@ -36,7 +35,7 @@ struct BenchRow {
 }  // namespace
 
 int bench_command(const BenchArgs& args) {
-  const std::string backend = resolve_backend(args.backend, true);
+  const std::string backend = resolve_backend(args.backend);
   const int threads = apply_threads(args.threads);
   if (args.steps < 1) throw Error("--steps", "must be >= 1");
   // Particle count at the reference dp, to pick dp for each requested size (N ~ dp^-3).
@@ -53,29 +52,15 @@ int bench_command(const BenchArgs& args) {
     BenchRow row;
     row.target = target;
     row.dp = kReferenceDp * std::cbrt(n_ref / target);
-    if (backend == "cuda") {
-      const std::unique_ptr<DeviceRun> run =
-          make_device_run(bench_case(row.dp), DeviceExecutor::Cuda);
-      run->step();  // warm-up: first sort, CUB's scratch
-      const auto t0 = std::chrono::steady_clock::now();
-      for (int s = 0; s < args.steps; ++s) {
-        // Each step ends with a reduction copied back to the host, so the clock sees finished
-        // work.
-        if (run->step().status != DeviceStepStatus::Ok)
-          throw Error("bench", "the CUDA step failed (dt collapse or non-finite state)");
-      }
-      row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      row.particles = run->size();
-      row.bytes = run->bytes_per_particle();
-    } else {
-      Simulation sim(bench_case(row.dp));
-      sim.step();  // warm-up: sizes every array, first sort
-      const auto t0 = std::chrono::steady_clock::now();
-      for (int s = 0; s < args.steps; ++s) sim.step();
-      row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      row.particles = sim.particles().size();
-      row.bytes = sim.bytes_per_particle();
-    }
+    Simulation sim(bench_case(row.dp), step_backend(backend));
+    sim.step();  // warm-up: sizes every array, first sort
+    const auto t0 = std::chrono::steady_clock::now();
+    // On the device each step ends with reductions copied back to the host, so the clock sees
+    // finished work.
+    for (int s = 0; s < args.steps; ++s) sim.step();
+    row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    row.particles = sim.particle_count();
+    row.bytes = sim.bytes_per_particle();
     row.steps = args.steps;
     row.rate = static_cast<double>(row.particles) * args.steps / row.wall_s;
     fmt::print("{:>12} {:>10.5f} {:>7} {:>9.2f} {:>18.3e} {:>14.0f}\n", row.particles, row.dp,

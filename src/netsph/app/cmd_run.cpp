@@ -101,7 +101,7 @@ int run_command(const RunArgs& args) {
     record.text["case.source"] = source;
   }
   record.text["case.overrides"] = join_lines(overrides);
-  const std::string backend = resolve_backend(args.backend, false);
+  const std::string backend = resolve_backend(args.backend);
   const int threads = apply_threads(args.threads);
   const std::filesystem::path out = restart ? std::filesystem::path(args.restart_dir)
                                     : args.out_dir.empty()
@@ -114,7 +114,7 @@ int run_command(const RunArgs& args) {
   if (spec.net_only()) return run_net_only(spec, out, args.quiet);
   spdlog::info("backend {}, {} OpenMP threads, output folder {}", backend, threads,
                std::filesystem::absolute(out).string());
-  Simulation sim(spec);
+  Simulation sim(spec, step_backend(backend));
   log_scene(sim);
   if (restart) {
     sim.restore_state(checkpoint);

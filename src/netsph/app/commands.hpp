@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "netsph/case/case_spec.hpp"
+#include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {
 
@@ -73,9 +74,11 @@ int validate_command(const ValidateArgs& args);
 /// Applies --threads (0 keeps the OpenMP default) and returns the thread count in use.
 int apply_threads(int threads);
 
-/// Checks --backend; returns the backend that will run, "cpu" or "cuda". `command_has_cuda`:
-/// whether the command can drive the CUDA step (bench can; run cannot yet). "auto" picks
-/// "cuda" there when netsph was built with CUDA and finds a usable device.
-std::string resolve_backend(const std::string& requested, bool command_has_cuda);
+/// Checks --backend; returns the backend that will run: "cpu", "cuda" (throws when netsph was
+/// built without CUDA or finds no usable device) or "host-device" (the CUDA backend's kernels
+/// on the CPU, slow: for checking). "auto" is "cpu" for now.
+std::string resolve_backend(const std::string& requested);
+/// The Simulation backend of a resolved name.
+StepBackend step_backend(const std::string& resolved);
 
 }  // namespace netsph::app

@@ -55,7 +55,11 @@ int main(int argc, char** argv) {
       app.add_subcommand("run", "run a case (the built-in default case without a file)");
   add_case_options(run_cmd, run.case_choice);
   run_cmd->add_option("-o,--output", run.out_dir, "output folder (default: out/<case name>)");
-  run_cmd->add_option("--backend", run.backend, "auto, cpu or cuda")->capture_default_str();
+  run_cmd
+      ->add_option("--backend", run.backend,
+                   "auto (the CPU for now), cpu, cuda, or host-device (the CUDA kernels on the "
+                   "CPU: slow, for checking)")
+      ->capture_default_str();
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: all cores)")
       ->capture_default_str();
   run_cmd->add_option("--max-steps", run.max_steps, "stop after this many steps (0: no limit)");
@@ -91,7 +95,9 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--sizes", sizes, "comma-separated particle counts")->capture_default_str();
   bench_cmd->add_option("--steps", bench.steps, "timed steps per size")->capture_default_str();
   bench_cmd->add_option("--threads", bench.threads, "OpenMP threads (0: all cores)");
-  bench_cmd->add_option("--backend", bench.backend, "auto, cpu or cuda")->capture_default_str();
+  bench_cmd
+      ->add_option("--backend", bench.backend, "auto (the CPU for now), cpu, cuda or host-device")
+      ->capture_default_str();
   bench_cmd->add_option("--json", bench.json_path, "also write the results to this JSON file");
 
   NetArgs net;

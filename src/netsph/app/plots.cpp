@@ -28,14 +28,15 @@ bool make_plots(const std::filesystem::path& run_dir, const std::string& shape_t
   const std::string probe =
       fmt::format("{} -c 'import matplotlib, numpy' > /dev/null 2>&1", kPython);
   if (std::system(probe.c_str()) != 0) {
-    spdlog::warn("plots skipped: {} cannot import matplotlib and numpy (install "
-                 "python3-matplotlib and python3-numpy, then run `netsph plot {}`)",
-                 kPython, run_dir.string());
+    spdlog::warn(
+        "plots skipped: {} cannot import matplotlib and numpy (install "
+        "python3-matplotlib and python3-numpy, then run `netsph plot {}`)",
+        kPython, run_dir.string());
     return false;
   }
-  const std::string command = fmt::format("{} - {} {} > {} 2>&1", kPython,
-                                          shell_quote(run_dir.string()), shell_quote(shape_times),
-                                          shell_quote((run_dir / "plots.log").string()));
+  const std::string command =
+      fmt::format("{} - {} {} > {} 2>&1", kPython, shell_quote(run_dir.string()),
+                  shell_quote(shape_times), shell_quote((run_dir / "plots.log").string()));
   std::FILE* pipe = popen(command.c_str(), "w");
   if (!pipe) {
     spdlog::warn("plots skipped: could not start {}", kPython);

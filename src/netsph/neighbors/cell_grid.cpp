@@ -112,6 +112,15 @@ void CellGrid::sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& orde
   begin_[0] = 0;
 }
 
+void CellGrid::adopt_ranges(std::span<const std::uint32_t> begin) {
+  const auto nc = static_cast<std::size_t>(cell_count());
+  if (begin.size() < nc + 1) throw Error("neighbors", "cell table shorter than the grid");
+  begin_.assign(begin.begin(), begin.begin() + static_cast<std::ptrdiff_t>(nc + 1));
+  occupied_.clear();
+  for (std::size_t c = 0; c < nc; ++c)
+    if (begin_[c + 1] > begin_[c]) occupied_.push_back(static_cast<std::int64_t>(c));
+}
+
 int CellGrid::neighbour_ranges(std::int64_t c, NeighbourRanges& out) const {
   int count = 0;
   index_.for_each_range(begin_.data(), static_cast<std::uint32_t>(c),

@@ -66,6 +66,10 @@ class CellGrid {
   /// grid are left out) and the cell ranges. Deterministic and stable for any thread count.
   void sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& order);
 
+  /// Adopts the cell table of a sort made elsewhere with the same index (the device step's):
+  /// begin[c] is the first sorted index of cell c; cell_count() + 1 entries are read.
+  void adopt_ranges(std::span<const std::uint32_t> begin);
+
   /// Largest displacement allowed since the last sort before a rebuild is needed, m.
   double max_displacement() const { return max_displacement_; }
 

@@ -139,7 +139,7 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
             fmt::format("stopped by the user at t = {:.6g} s (step {})", sim.time(), sim.steps());
         break;
       }
-      particle_steps += static_cast<double>(sim.particles().size());
+      particle_steps += static_cast<double>(sim.particle_count());
       sim.step();
       outputs.after_step(sim);
       if (sim.diagnostics().lost_total > 0 && !warned_lost) {
@@ -154,14 +154,14 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
         write_checkpoint();
         while (next_checkpoint <= sim.time() * (1 + 1e-12)) next_checkpoint += checkpoint_every;
       }
-      if (opt.progress) progress.update(sim.time(), sim.steps(), sim.particles().size());
+      if (opt.progress) progress.update(sim.time(), sim.steps(), sim.particle_count());
     }
     if (r.status.empty()) r.status = "completed";
   } catch (const SimulationUnstable& e) {
     r.status = "unstable";
     r.message = e.what();
   }
-  if (opt.progress) progress.finish(sim.time(), sim.steps(), sim.particles().size());
+  if (opt.progress) progress.finish(sim.time(), sim.steps(), sim.particle_count());
 
   r.wall_s = wall();
   r.steps = sim.steps();

@@ -12,11 +12,12 @@
 
 namespace netsph {
 
-Simulation::Simulation(const CaseSpec& spec)
+Simulation::Simulation(const CaseSpec& spec, StepBackend backend)
     : spec_(spec_with_net_knots(spec)),
       nets_(coupled_nets(spec_)),
       scene_(build_scene(spec_)),
-      p_(scene_.particles) {
+      p_(scene_.particles),
+      backend_(backend) {
   const FluidModel& m = scene_.model;
   grid_.configure(scene_.domain_min, scene_.domain_max, m.support, kGridSkin, m.dims,
                   spec.domain.periodic);
@@ -35,7 +36,10 @@ Simulation::Simulation(const CaseSpec& spec)
     for (std::size_t k = 0; k < net.model.knots.size(); ++k)
       scene_.bodies[net.first_body + k].external_force = {};
   }
+  if (backend_ != StepBackend::Cpu) start_device();
 }
+
+Simulation::~Simulation() = default;
 
 void Simulation::build_view(bool half_step) {
   view_.build(p_, scene_.model, grid_.origin());
@@ -265,6 +269,7 @@ void Simulation::apply_mdbc() {
 }
 
 void Simulation::fail_non_finite(std::int64_t i) const {
+  sync_from_device();
   const Vec3d x = p_.pos[i];
   const Vec3f v = p_.vel[i];
   static const char* kind_name[] = {"fluid", "wall", "buffer", "body"};
@@ -277,6 +282,7 @@ void Simulation::fail_non_finite(std::int64_t i) const {
 }
 
 void Simulation::step() {
+  if (device_) return device_step();
   const FluidModel& m = scene_.model;
 
   // Open boundaries first: conversions use positions only, and the sort then places the
@@ -376,12 +382,14 @@ std::string Simulation::fastest_accelerating() const {
 }
 
 std::vector<float> Simulation::pressures() const {
+  sync_from_device();
   std::vector<float> p(p_.size());
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = scene_.model.eos.pressure(p_.rho[i]);
   return p;
 }
 
 double Simulation::bytes_per_particle() const {
+  if (device_) return device_->bytes_per_particle();
   const auto n = static_cast<double>(std::max<std::size_t>(p_.size(), 1));
   const std::size_t bytes =
       p_.bytes() + view_.bytes() + start_.bytes() + acc_.capacity() * sizeof(Vec3f) +

@@ -14,6 +14,7 @@
 // run() adds the outputs (snapshots, series.csv, summary.json) and the progress display.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "netsph/backend/cpu/integrate.hpp"
 #include "netsph/backend/cpu/interaction_view.hpp"
 #include "netsph/backend/cpu/rates.hpp"
+#include "netsph/backend/device/device_run.hpp"
 #include "netsph/case/case_spec.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/io/checkpoint_file.hpp"
@@ -57,9 +59,17 @@ struct StepDiagnostics {
   std::vector<Lost> last_lost;
 };
 
+/// Where the particle work of a step runs: the CPU backend (OpenMP, backend/cpu), the CUDA
+/// device (the device-shaped step, backend/device on the CUDA executor), or that same step on
+/// the host executor (slow: it exists to check the CUDA backend's logic where there is no GPU).
+enum class StepBackend { Cpu, Cuda, HostDevice };
+
 class Simulation {
  public:
-  explicit Simulation(const CaseSpec& spec);
+  /// Throws netsph::Error for StepBackend::Cuda when netsph was built without CUDA or finds no
+  /// usable device.
+  explicit Simulation(const CaseSpec& spec, StepBackend backend = StepBackend::Cpu);
+  ~Simulation();
 
   /// Advances one symplectic step. Throws SimulationUnstable.
   void step();
@@ -67,13 +77,28 @@ class Simulation {
   const CaseSpec& spec() const { return spec_; }
   const Scene& scene() const { return scene_; }
   const FluidModel& model() const { return scene_.model; }
-  const CellGrid& grid() const { return grid_; }
-  const ParticleSet& particles() const { return p_; }
+  /// The grid of the last sort (on the device backends: copied back on first use after a step).
+  const CellGrid& grid() const {
+    sync_from_device();
+    return grid_;
+  }
+  /// The particles, sorted by cell (on the device backends: copied back on first use after a
+  /// step, so outputs cost a transfer only when they are written).
+  const ParticleSet& particles() const {
+    sync_from_device();
+    return p_;
+  }
+  /// The number of particles, without a transfer from the device.
+  std::size_t particle_count() const { return device_ ? device_->size() : p_.size(); }
+  StepBackend backend() const { return backend_; }
   const std::vector<RigidBody>& bodies() const { return scene_.bodies; }
   /// The nets coupled with the fluid (knot positions as of the last stage).
   const std::vector<CoupledNet>& nets() const { return nets_; }
   std::vector<RigidBody>& bodies() { return scene_.bodies; }
-  ParticleSet& particles() { return p_; }
+  ParticleSet& particles() {
+    sync_from_device();
+    return p_;
+  }
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
   double last_dt() const { return diag_.dt_limits.dt; }
@@ -93,6 +118,12 @@ class Simulation {
   void restore_state(const CheckpointData& c);
 
  private:
+  // The device backends (simulation_device.cpp): the step runs in device_, bodies and nets stay
+  // here (the step calls back into advance_bodies), particles come back on demand.
+  void start_device();
+  void device_step();
+  void sync_from_device() const;
+
   void sort_particles(bool mid_step);
   /// The interaction view of the current state; `half_step` selects the walls' velocity.
   void build_view(bool half_step);
@@ -119,7 +150,7 @@ class Simulation {
   std::vector<CoupledNet> nets_;
   Scene scene_;
   ParticleSet& p_;
-  CellGrid grid_;
+  mutable CellGrid grid_;  // mutable: the device backends copy its cell table back on demand
   InteractionView view_;
   StepStart start_;
   std::vector<Vec3f> acc_;
@@ -147,6 +178,12 @@ class Simulation {
   std::int64_t steps_ = 0;
   double dt_floor_ = 0;
   StepDiagnostics diag_;
+
+  StepBackend backend_ = StepBackend::Cpu;
+  std::unique_ptr<DeviceRun> device_;
+  // Particles and grid are behind the device's by a step (copied back by sync_from_device).
+  mutable bool device_ahead_ = false;
+  mutable std::vector<std::uint32_t> device_cells_;
 };
 
 }  // namespace netsph

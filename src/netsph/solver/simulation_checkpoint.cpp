@@ -18,6 +18,7 @@ void put3(std::vector<T>& out, const V& v) {
 }  // namespace
 
 void Simulation::save_state(CheckpointData& c) const {
+  sync_from_device();
   const std::size_t n = p_.size();
   auto& pos = c.f64["particles.pos"];
   auto& vel = c.f32["particles.vel"];
@@ -132,6 +133,8 @@ void Simulation::restore_state(const CheckpointData& c) {
       ++k;
     }
   }
+  // The device backends continue from the restored particles and bodies.
+  if (device_) start_device();
 }
 
 }  // namespace netsph

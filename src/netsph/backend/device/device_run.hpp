@@ -1,6 +1,7 @@
 #pragma once
 // A device-shaped run behind a plain interface, so that code compiled by the host compiler
-// (the solver, the command line, tests) drives the CUDA instantiation without seeing CUDA.
+// (Simulation, solver/simulation_device.cpp) drives the CUDA instantiation without seeing
+// CUDA.
 #include <memory>
 
 #include "netsph/backend/device/device_stepper.hpp"
@@ -17,9 +18,8 @@ class DeviceRun {
   virtual std::int64_t steps() const = 0;
   virtual std::size_t size() const = 0;
   virtual double bytes_per_particle() const = 0;
-  /// The bodies' states and loads as of the last stage.
-  virtual const std::vector<RigidState>& body_states() const = 0;
-  virtual const std::vector<DeviceBodyLoads>& body_loads() const = 0;
+  virtual void download_cell_begin(std::vector<std::uint32_t>& begin) const = 0;
+  virtual void set_clock(double time, std::int64_t steps, double dt_floor) = 0;
 };
 
 template <class Exec>
@@ -32,8 +32,12 @@ class DeviceRunOn final : public DeviceRun {
   std::int64_t steps() const override { return s_.steps(); }
   std::size_t size() const override { return s_.size(); }
   double bytes_per_particle() const override { return s_.bytes_per_particle(); }
-  const std::vector<RigidState>& body_states() const override { return s_.body_states(); }
-  const std::vector<DeviceBodyLoads>& body_loads() const override { return s_.body_loads(); }
+  void download_cell_begin(std::vector<std::uint32_t>& begin) const override {
+    s_.download_cell_begin(begin);
+  }
+  void set_clock(double time, std::int64_t steps, double dt_floor) override {
+    s_.set_clock(time, steps, dt_floor);
+  }
 
  private:
   DeviceStepper<Exec> s_;

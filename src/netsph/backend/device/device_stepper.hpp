@@ -85,6 +85,7 @@ struct DeviceStepReport {
   std::size_t created = 0;  ///< inlet buffer particles created this step
   std::size_t removed = 0;  ///< buffer particles that left through a face this step
   bool resorted = false;
+  double max_speed = 0;  ///< largest fluid speed at the end of the step, m/s
 };
 
 template <class Exec>
@@ -177,9 +178,21 @@ class DeviceStepper {
     }
     if (!correct(dt)) rep.status = DeviceStepStatus::NonFinite;
     place_bodies(false);
+    rep.max_speed = max_fluid_speed();
     time_ += dt;
     ++steps_;
     return rep;
+  }
+
+  /// Sets the clock (time, step count, dt floor) of a run continued from a checkpoint.
+  void set_clock(double time, std::int64_t steps, double dt_floor) {
+    time_ = time, steps_ = steps, dt_floor_ = dt_floor;
+  }
+
+  /// The cell table of the last sort: first sorted index of every cell, cells + 1 entries.
+  void download_cell_begin(std::vector<std::uint32_t>& begin) const {
+    begin.resize(static_cast<std::size_t>(s_.grid.cells()) + 1);
+    Exec::download(begin.data(), cell_begin_, begin.size());
   }
 
   /// Copies the particles back (sorted by cell as of the last step).
@@ -198,10 +211,6 @@ class DeviceStepper {
 
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
-  /// The bodies' states as of the last stage.
-  const std::vector<RigidState>& body_states() const { return states_; }
-  /// The bodies' loads of the last rates pass.
-  const std::vector<DeviceBodyLoads>& body_loads() const { return loads_host_; }
   std::size_t size() const { return n_; }
   /// Bytes the executor holds per particle (all buffers, capacity, and the cell table).
   double bytes_per_particle() const {
@@ -524,6 +533,18 @@ class DeviceStepper {
     double* moved = moved_.data();
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
       moved[i] = device_predict_particle(st, ss, r, walls, motion, m, dt, i);
+    });
+    return std::sqrt(Exec::max_of(moved_.data(), n_));
+  }
+
+  double max_fluid_speed() {
+    const DeviceState st = state();
+    double* speed2 = moved_.data();
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      const Vec3f v = st.vel[i];
+      speed2[i] = st.kind[i] == ParticleKind::Fluid
+                      ? static_cast<double>(v.x * v.x + v.y * v.y + v.z * v.z)
+                      : 0.0;
     });
     return std::sqrt(Exec::max_of(moved_.data(), n_));
   }

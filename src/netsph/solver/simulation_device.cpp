@@ -1,0 +1,96 @@
+// Simulation on the device backends: the step runs in the device-shaped stepper
+// (backend/device/, on the CUDA device or the host executor); the bodies and the nets stay
+// here and the stepper calls back into the same stage code as the CPU step
+// (solver/body_motion.cpp); particles and the cell table come back only when something reads
+// them (outputs, checkpoints, diagnostics).
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "netsph/solver/body_motion.hpp"
+#include "netsph/solver/device_setup.hpp"
+#include "netsph/solver/simulation.hpp"
+
+namespace netsph {
+
+void Simulation::start_device() {
+  DeviceSetup setup = device_setup(spec_, scene_);
+  setup.advance_bodies = [this](bool corrector, double time, double dt,
+                                const std::vector<DeviceBodyLoads>& loads,
+                                std::vector<RigidState>& states) {
+    for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+      const double* f = loads[b].f;
+      RigidBody& body = scene_.bodies[b];
+      body.fluid_force = {f[0], f[1], f[2]}, body.fluid_torque = {f[3], f[4], f[5]};
+      body.contact_force = {f[6], f[7], f[8]}, body.contact_torque = {f[9], f[10], f[11]};
+    }
+    netsph::advance_bodies(spec_, scene_.bodies, nets_, time, corrector, dt);
+    for (std::size_t b = 0; b < scene_.bodies.size(); ++b) states[b] = scene_.bodies[b].state;
+  };
+  bool moving = false;
+  for (const WallSpec& w : spec_.walls) moving |= w.motion.moving();
+  if (moving) {
+    setup.wall_velocity = [this](std::size_t w, double t) {
+      return Vec3f(spec_.walls[w].motion.at(t));
+    };
+  }
+  if (backend_ == StepBackend::HostDevice) {
+    device_ = make_host_device_run(std::move(setup), p_);
+  } else {
+#if defined(NETSPH_HAVE_CUDA)
+    device_ = make_cuda_device_run(std::move(setup), p_);
+#else
+    throw Error("--backend cuda",
+                "this netsph was built without CUDA (no nvcc found at configure time); use "
+                "--backend cpu");
+#endif
+  }
+  device_->set_clock(time_, steps_, dt_floor_);
+  device_ahead_ = false;
+}
+
+void Simulation::device_step() {
+  const DeviceStepReport r = device_->step();
+  device_ahead_ = true;
+  diag_.dt_limits = r.dt_limits;
+  if (steps_ == 0) dt_floor_ = r.dt_floor;
+  if (r.status == DeviceStepStatus::DtCollapsed) {
+    throw SimulationUnstable(
+        "solver",
+        fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.3g} s is below "
+                    "the floor {:.3g} s (force limit {:.3g} s, acoustic-viscous limit "
+                    "{:.3g} s); particles are colliding or the flow is too fast for c0 = "
+                    "{:.4g} m/s",
+                    time_, steps_, r.dt_limits.dt, r.dt_floor, r.dt_limits.force,
+                    r.dt_limits.acoustic, scene_.sound_speed));
+  }
+  diag_.open.created += r.created;
+  diag_.open.removed += r.removed;
+  diag_.lost_total += r.lost;
+  if (r.resorted) ++diag_.resorts;
+  diag_.max_speed = r.max_speed;
+  check_lost(r.lost);
+  time_ = device_->time();
+  ++steps_;
+  if (r.status == DeviceStepStatus::NonFinite) {
+    sync_from_device();
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const bool finite = std::isfinite(p_.pos[i].x) && std::isfinite(p_.pos[i].y) &&
+                          std::isfinite(p_.pos[i].z) && std::isfinite(p_.vel[i].x) &&
+                          std::isfinite(p_.vel[i].y) && std::isfinite(p_.vel[i].z) &&
+                          std::isfinite(p_.rho[i]) && p_.rho[i] > 0;
+      if (!finite) fail_non_finite(static_cast<std::int64_t>(i));
+    }
+  }
+}
+
+void Simulation::sync_from_device() const {
+  if (!device_ || !device_ahead_) return;
+  device_ahead_ = false;
+  // p_ is a reference member: const here is the Simulation's, not the particles'.
+  device_->download(p_);
+  device_->download_cell_begin(device_cells_);
+  grid_.adopt_ranges(device_cells_);
+}
+
+}  // namespace netsph
