@@ -6,7 +6,8 @@
 #
 #   ./tools/gpu_bundle.sh [build-dir]        # default: build
 #
-# Then, through the device tool, with carry [".gpu"] (docs/PERFORMANCE.md, "CUDA"):
+# Then, through the device tool, with carry [".gpu"]: `bash tools/gpu_session.sh` (all the
+# checks, docs/PERFORMANCE.md "CUDA"), or by hand:
 #   export LD_LIBRARY_PATH=$PWD/.gpu/lib NETSPH_CASES_DIR=$PWD/cases
 #   .gpu/device_parity_test --gtest_filter='DeviceParity.Cuda*'
 #   .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --json $OUT/bench.json
