@@ -95,6 +95,8 @@ class Simulation {
   /// The nets coupled with the fluid (knot positions as of the last stage).
   const std::vector<CoupledNet>& nets() const { return nets_; }
   std::vector<RigidBody>& bodies() { return scene_.bodies; }
+  /// For set-up and tests on the CPU backend: on the device backends a change here does not
+  /// reach the device (the next step overwrites it).
   ParticleSet& particles() {
     sync_from_device();
     return p_;
