@@ -3,13 +3,12 @@
 // here and the stepper calls back into the same stage code as the CPU step
 // (solver/body_motion.cpp); particles and the cell table come back only when something reads
 // them (outputs, checkpoints, diagnostics).
-#include <cmath>
-
 #include <fmt/format.h>
 
 #include "netsph/solver/body_motion.hpp"
 #include "netsph/solver/device_setup.hpp"
 #include "netsph/solver/simulation.hpp"
+#include "netsph/sph/symplectic.hpp"
 
 namespace netsph {
 
@@ -75,11 +74,8 @@ void Simulation::device_step() {
   if (r.status == DeviceStepStatus::NonFinite) {
     sync_from_device();
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const bool finite = std::isfinite(p_.pos[i].x) && std::isfinite(p_.pos[i].y) &&
-                          std::isfinite(p_.pos[i].z) && std::isfinite(p_.vel[i].x) &&
-                          std::isfinite(p_.vel[i].y) && std::isfinite(p_.vel[i].z) &&
-                          std::isfinite(p_.rho[i]) && p_.rho[i] > 0;
-      if (!finite) fail_non_finite(static_cast<std::int64_t>(i));
+      if (!finite_state(p_.pos[i], p_.vel[i], p_.rho[i]))
+        fail_non_finite(static_cast<std::int64_t>(i));
     }
   }
 }

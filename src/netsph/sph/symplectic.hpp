@@ -11,6 +11,8 @@
 //                                       eps = -(drho*/rho*) dt
 // The density update is the exact solution of d(rho)/dt = -rho div(v) over the step with a
 // frozen divergence, which keeps rho positive.
+#include <cmath>
+
 #include "netsph/core/host_device.hpp"
 #include "netsph/core/real.hpp"
 #include "netsph/core/vec3.hpp"
@@ -43,6 +45,13 @@ NETSPH_HD void symplectic_correct(const Vec3d& r0, const Vec3f& v0, Real rho0, c
   v = v0 + acc * dtr;
   r = r0 + (Vec3d(v0) + Vec3d(v)) * (0.5 * dt);
   rho = symplectic_density_full(rho0, drho, rho_half, dt);
+}
+
+/// Whether a particle's state is usable: finite position, velocity and density, density > 0
+/// (the solvers' instability check after each corrector).
+NETSPH_HD bool finite_state(const Vec3d& r, const Vec3f& v, Real rho) {
+  return std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.z) && std::isfinite(v.x) &&
+         std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(rho) && rho > 0;
 }
 
 /// DBC boundary particles keep at least the reference density so that they never attract

@@ -86,10 +86,7 @@ std::int64_t symplectic_corrector(ParticleSet& p, const StepStart& s, const Stag
         break;
       }
     }
-    const bool finite = std::isfinite(p.pos[i].x) && std::isfinite(p.pos[i].y) &&
-                        std::isfinite(p.pos[i].z) && std::isfinite(p.vel[i].x) &&
-                        std::isfinite(p.vel[i].y) && std::isfinite(p.vel[i].z) &&
-                        std::isfinite(p.rho[i]) && p.rho[i] > 0;
+    const bool finite = finite_state(p.pos[i], p.vel[i], p.rho[i]);
     if (!finite) bad = std::min(bad, i);
   }
   return bad == n ? -1 : bad;

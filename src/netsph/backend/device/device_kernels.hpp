@@ -173,30 +173,22 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
             gx += vf * dx, gy += vf * dy, gz += vf * dz;
             div -= vf * r2;
           }
-        } else if (body_a && v.fluid[b] > Real(0)) {
-          const Neighbour nb{{dx, dy, dz},
-                             r2,
-                             {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                             {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
-                             v.rho[b],
-                             v.press[b] - p_bg,
-                             m.mass,
-                             v.fluid[b]};
-          const PairRates s =
-              fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a - p_bg, nb);
-          ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
-          vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
         } else if (v.fluid[b] > Real(0)) {
+          // A solid sees its fluid neighbours with its own velocity in continuity; a body
+          // also takes their force, with gauge pressures.
+          const Real p_off = body_a ? p_bg : Real(0);
           const Neighbour nb{{dx, dy, dz},
                              r2,
                              {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
                              {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
                              v.rho[b],
-                             v.press[b],
+                             v.press[b] - p_off,
                              m.mass,
                              v.fluid[b]};
-          const PairRates s = boundary_pair_rates<Kernel>(m, nb);
-          dr += s.drho;
+          const PairRates s = body_a ? fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(
+                                           m, rho_a, press_a - p_off, nb)
+                                     : boundary_pair_rates<Kernel>(m, nb);
+          ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
           vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
         }
       }
@@ -473,10 +465,7 @@ NETSPH_HD bool device_correct_particle(const DeviceState& p, const DeviceStart& 
     const Real rho_new = symplectic_density_full(s.rho[i], r.drho[i], p.rho[i], dt);
     p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);
   }
-  const Vec3d x = p.pos[i];
-  const Vec3f u = p.vel[i];
-  return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && std::isfinite(u.x) &&
-         std::isfinite(u.y) && std::isfinite(u.z) && std::isfinite(p.rho[i]) && p.rho[i] > 0;
+  return finite_state(p.pos[i], p.vel[i], p.rho[i]);
 }
 
 }  // namespace netsph
