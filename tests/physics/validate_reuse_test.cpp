@@ -8,6 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "netsph/case/builtin_cases.hpp"
+#include "netsph/case/case_reader.hpp"
+#include "netsph/solver/runner.hpp"
 #include "netsph/validation/validation.hpp"
 
 namespace netsph {
@@ -56,6 +59,57 @@ TEST(ValidateReuse, KeepsACompletedRunOfTheSameCaseAndOverrides) {
   write_json(dir / "run" / "summary.json", marked);
   const ValidationContext fresh{dir, false, false};
   EXPECT_FALSE(fresh.run_case("hydrostatic2d", short_run, "run").contains("reuse_mark"));
+  std::filesystem::remove_all(dir);
+}
+
+// A validation run that stopped part-way (here at a step limit; killed or interrupted runs leave
+// the same checkpoint) is continued from its checkpoint with --reuse and ends where the
+// uninterrupted run ends; a checkpoint of other overrides, or without --reuse, is not used.
+TEST(ValidateReuse, ContinuesAStoppedRunFromItsCheckpoint) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "netsph_resume_test";
+  std::filesystem::remove_all(dir);
+  const std::vector<std::string> overrides = {"simulation.end_time=0.006",
+                                              "output.snapshot_every=0.003"};
+  const std::string name = "hydrostatic2d";
+  const ValidationContext ctx{dir, false, true};
+  const nlohmann::json whole = ctx.run_case(name, overrides, "whole");
+  ASSERT_EQ(whole.at("status"), "completed");
+  EXPECT_FALSE(whole.at("time").contains("restarted_from_s"));
+
+  // The same case, run as validate runs it, stopped after a third of its steps.
+  const std::int64_t steps = whole.at("time").at("steps").get<std::int64_t>();
+  ASSERT_GT(steps, 6);
+  const auto stopped_run = [&](const std::vector<std::string>& o) -> void {
+    std::filesystem::remove_all(dir / "split");
+    Simulation sim(read_case_string(builtin_case_text(name), "builtin:" + name, o));
+    RunOptions opt;
+    opt.out_dir = dir / "split";
+    opt.progress = false;
+    opt.max_steps = steps / 3;
+    opt.case_record = case_record(std::string(builtin_case_text(name)), "builtin:" + name, o);
+    const RunReport r = run_simulation(sim, opt);
+    ASSERT_EQ(r.status, "step limit");
+  };
+  stopped_run(overrides);
+  std::filesystem::remove(dir / "split" / "summary.json");  // as a killed run leaves it
+  const nlohmann::json continued = ctx.run_case(name, overrides, "split");
+  ASSERT_EQ(continued.at("status"), "completed");
+  ASSERT_TRUE(continued.at("time").contains("restarted_from_s"));
+  EXPECT_GT(continued.at("time").at("restarted_from_s").get<double>(), 0.0);
+  EXPECT_EQ(continued.at("time").at("steps"), whole.at("time").at("steps"));
+  EXPECT_EQ(continued.at("final_state").at("kinetic_energy_J"),
+            whole.at("final_state").at("kinetic_energy_J"));
+
+  // Stopped with other overrides: the checkpoint is not this run's, so it runs from the start.
+  std::vector<std::string> other = overrides;
+  other.push_back("simulation.cfl=0.1");
+  stopped_run(other);  // leaves summary.json with status "step limit"
+  EXPECT_FALSE(ctx.run_case(name, overrides, "split").at("time").contains("restarted_from_s"));
+
+  // Without --reuse a stopped run is run again from the start.
+  stopped_run(overrides);
+  const ValidationContext fresh{dir, false, false};
+  EXPECT_FALSE(fresh.run_case(name, overrides, "split").at("time").contains("restarted_from_s"));
   std::filesystem::remove_all(dir);
 }
 

@@ -1,5 +1,4 @@
 #include <csignal>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -54,25 +53,11 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
 
 namespace {
 
-std::string join_lines(const std::vector<std::string>& items) {
-  std::string out;
-  for (const std::string& s : items) out += s + "\n";
-  return out;
-}
-
-std::vector<std::string> split_lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) out.push_back(line);
-  return out;
-}
-
 /// The case of a restart: as its checkpoint recorded it, with the new --set overrides after
 /// the old ones (so that, e.g., simulation.end_time can be raised to run longer).
 CaseSpec restart_case(const CheckpointData& c, const std::vector<std::string>& more,
                       std::vector<std::string>& overrides) {
-  overrides = split_lines(c.text_of("case.overrides"));
+  overrides = recorded_overrides(c);
   overrides.insert(overrides.end(), more.begin(), more.end());
   return read_case_string(c.text_of("case.toml"), c.text_of("case.source"), overrides);
 }
@@ -92,15 +77,13 @@ int run_command(const RunArgs& args) {
   if (restart) {
     checkpoint = read_checkpoint_file(checkpoint_path(args.restart_dir));
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
-    record.text["case.toml"] = checkpoint.text_of("case.toml");
-    record.text["case.source"] = checkpoint.text_of("case.source");
+    record = case_record(checkpoint.text_of("case.toml"), checkpoint.text_of("case.source"),
+                         overrides);
   } else {
     spec = load_case(args.case_choice);
     const auto [text, source] = case_text(args.case_choice);
-    record.text["case.toml"] = text;
-    record.text["case.source"] = source;
+    record = case_record(text, source, overrides);
   }
-  record.text["case.overrides"] = join_lines(overrides);
   const std::string backend = resolve_backend(args.backend);
   const int threads = apply_threads(args.threads);
   const std::filesystem::path out = restart ? std::filesystem::path(args.restart_dir)

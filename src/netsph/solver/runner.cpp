@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -100,9 +101,29 @@ bool stop_requested() {
   return g_stop.load();
 }
 
+CheckpointData case_record(const std::string& toml, const std::string& source,
+                           const std::vector<std::string>& overrides) {
+  CheckpointData c;
+  c.text["case.toml"] = toml;
+  c.text["case.source"] = source;
+  std::string lines;
+  for (const std::string& o : overrides) lines += o + "\n";
+  c.text["case.overrides"] = lines;
+  return c;
+}
+
+std::vector<std::string> recorded_overrides(const CheckpointData& checkpoint) {
+  std::vector<std::string> out;
+  std::istringstream in(checkpoint.text_of("case.overrides"));
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) out.push_back(line);
+  return out;
+}
+
 RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   const CaseSpec& spec = sim.spec();
   const double end = spec.simulation.end_time;
+  const double start_time = sim.time();
   RunOutputs outputs(sim, opt.out_dir, spec.output.snapshots, opt.resume);
   // Checkpoints every checkpoint_every seconds of simulated time (default: a tenth of the
   // run) and at the end, so that a run that dies loses at most that much.
@@ -179,6 +200,7 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   r.checkpoint_time = checkpoint_time;
   r.snapshots = outputs.snapshots_written();
   r.summary = summary_json(sim, r, opt, outputs);
+  if (opt.resume) r.summary["time"]["restarted_from_s"] = start_time;
   write_file_atomic(opt.out_dir / "summary.json", r.summary.dump(2) + "\n");
   return r;
 }

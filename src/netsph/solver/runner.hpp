@@ -27,6 +27,13 @@ struct RunOptions {
   const CheckpointData* resume = nullptr;
 };
 
+/// The case as run, for RunOptions::case_record: its TOML text, where it came from (a file
+/// or builtin:<name>) and the --set overrides, one per line.
+CheckpointData case_record(const std::string& toml, const std::string& source,
+                           const std::vector<std::string>& overrides);
+/// The overrides a checkpoint's case record holds.
+std::vector<std::string> recorded_overrides(const CheckpointData& checkpoint);
+
 /// The checkpoint file of a run folder.
 inline std::filesystem::path checkpoint_path(const std::filesystem::path& run_dir) {
   return run_dir / "checkpoint.h5";

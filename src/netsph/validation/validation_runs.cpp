@@ -12,6 +12,7 @@
 #include "netsph/case/builtin_cases.hpp"
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/io/checkpoint_file.hpp"
 #include "netsph/net/equivalent_knot.hpp"
 #include "netsph/net/net_generator.hpp"
 #include "netsph/net/standalone_net_run.hpp"
@@ -43,6 +44,34 @@ nlohmann::json completed_run(const std::filesystem::path& dir, const CaseSpec& s
   const std::vector<std::string> overrides = c.value("overrides", std::vector<std::string>{});
   if (c.value("source", "") != spec.source || overrides != spec.overrides) return nullptr;
   return s;
+}
+
+/// The checkpoint of an earlier run of the same case and overrides in dir that stopped before
+/// its end (killed, interrupted, or a step limit), into `checkpoint`; false when there is none.
+/// An unstable run is not continued: its checkpoint would lead to the same failure.
+bool unfinished_run(const std::filesystem::path& dir, const CheckpointData& record,
+                    CheckpointData& checkpoint) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(checkpoint_path(dir), ec)) return false;
+  const std::filesystem::path summary = dir / "summary.json";
+  if (std::filesystem::is_regular_file(summary, ec)) {
+    const nlohmann::json s = nlohmann::json::parse(read_file_text(summary), nullptr, false);
+    const std::string status = s.is_discarded() ? "" : s.value("status", "");
+    if (status != "interrupted" && status != "step limit") return false;
+  }
+  try {
+    checkpoint = read_checkpoint_file(checkpoint_path(dir));
+  } catch (const Error& e) {
+    spdlog::warn("validate: {} cannot be continued ({}); running it again", dir.string(),
+                 e.what());
+    return false;
+  }
+  for (const char* key : {"case.toml", "case.source", "case.overrides"}) {
+    if (!checkpoint.text.contains(key) || checkpoint.text.at(key) != record.text.at(key)) {
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -81,6 +110,16 @@ nlohmann::json ValidationContext::run_case(const std::string& builtin,
   o.out_dir = dir;
   o.progress = progress;
   o.plain_progress = true;
+  // Recorded in every checkpoint, so that an interrupted validation run can be continued
+  // (by --reuse here, or by `netsph run --restart DIR`).
+  o.case_record = case_record(std::string(builtin_case_text(builtin)), spec.source, overrides);
+  CheckpointData checkpoint;
+  if (reuse && unfinished_run(dir, o.case_record, checkpoint)) {
+    sim.restore_state(checkpoint);
+    o.resume = &checkpoint;
+    spdlog::info("validate: continuing the run of {} in {} from its checkpoint at t = {:.6g} s",
+                 builtin, dir.string(), sim.time());
+  }
   const RunReport r = run_simulation(sim, o);
   if (!r.ok()) throw Error(builtin, r.status + ": " + r.message);
   return r.summary;
