@@ -216,7 +216,8 @@ class DeviceStepper {
   double bytes_per_particle() const {
     const std::size_t per =
         2 * (sizeof(Vec3d) + sizeof(Vec3f) + sizeof(Real) + sizeof(ParticleKind) +
-             2 * sizeof(std::uint32_t) + sizeof(Vec3f)) +  // state + gather scratch
+             sizeof(std::uint32_t)) +                      // state + gather scratch
+        sizeof(std::uint32_t) + sizeof(Vec3f) +             // group, ghost (no own scratch)
         sizeof(Vec3d) +
         sizeof(Vec3f) + sizeof(Real) +                      // step start
         (mirrors_ ? 12 : 9) * sizeof(Real) +                // view
@@ -235,7 +236,6 @@ class DeviceStepper {
     pos_.resize(n), vel_.resize(n), rho_.resize(n), kind_.resize(n), id_.resize(n);
     group_.resize(n), ghost_.resize(n);
     pos2_.resize(n), vel2_.resize(n), rho2_.resize(n), kind2_.resize(n), id2_.resize(n);
-    group2_.resize(n), ghost2_.resize(n);
     spos_.resize(n), svel_.resize(n), srho_.resize(n);
     for (auto* b : {&vx_, &vy_, &vz_, &x_, &y_, &z_, &vrho_, &press_, &fluid_}) b->resize(n);
     if (mirrors_) cvx_.resize(n), cvy_.resize(n), cvz_.resize(n);
@@ -292,8 +292,10 @@ class DeviceStepper {
     keys_.swap(keys2_);  // the sorted keys and order are now in keys_ and order2_
     const std::size_t kept = Exec::count_below(keys_.data(), n_, g.sentinel());
     gather(pos_, pos2_, kept), gather(vel_, vel2_, kept), gather(rho_, rho2_, kept);
-    gather(kind_, kind2_, kept), gather(id_, id2_, kept), gather(group_, group2_, kept);
-    gather(ghost_, ghost2_, kept);
+    // One scratch array per element type: a gather swaps it with the array it sorted, so the
+    // same scratch serves the next array of that type (ids and groups, velocities and ghosts).
+    gather(kind_, kind2_, kept), gather(id_, id2_, kept), gather(group_, id2_, kept);
+    gather(ghost_, vel2_, kept);
     if (mid_step)
       gather(spos_, pos2_, kept), gather(svel_, vel2_, kept), gather(srho_, rho2_, kept);
     n_ = kept;
@@ -578,11 +580,11 @@ class DeviceStepper {
   std::int64_t steps_ = 0;
   double dt_floor_ = 0;
   Buffer<Vec3d> pos_, pos2_, spos_;
-  Buffer<Vec3f> vel_, vel2_, svel_, ghost_, ghost2_, acc_, grad_c_;
+  Buffer<Vec3f> vel_, vel2_, svel_, ghost_, acc_, grad_c_;
   Buffer<Real> rho_, rho2_, srho_, x_, y_, z_, vx_, vy_, vz_, cvx_, cvy_, cvz_, vrho_, press_,
       fluid_, drho_, acc2_, visc_, div_r_;
   Buffer<ParticleKind> kind_, kind2_;
-  Buffer<std::uint32_t> id_, id2_, group_, group2_, keys_, keys2_, order_, order2_, cell_begin_;
+  Buffer<std::uint32_t> id_, id2_, group_, keys_, keys2_, order_, order2_, cell_begin_;
   Buffer<double> moved_;
   Buffer<DeviceWall> walls_;
   Buffer<DeviceWallMotion> motion_;
