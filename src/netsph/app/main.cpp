@@ -122,7 +122,8 @@ int main(int argc, char** argv) {
   validate_cmd->add_option("--threads", validate.threads, "OpenMP threads (0: all cores)");
   validate_cmd->add_flag("--reuse", validate.reuse,
                          "keep the runs already completed in the output folder (same built-in "
-                         "case and overrides) instead of running them again");
+                         "case and overrides) instead of running them again, and continue "
+                         "the ones that stopped part-way from their checkpoints");
 
   auto* cases_cmd = app.add_subcommand("cases", "list the built-in cases");
 
