@@ -77,8 +77,8 @@ int run_command(const RunArgs& args) {
   if (restart) {
     checkpoint = read_checkpoint_file(checkpoint_path(args.restart_dir));
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
-    record = case_record(checkpoint.text_of("case.toml"), checkpoint.text_of("case.source"),
-                         overrides);
+    record =
+        case_record(checkpoint.text_of("case.toml"), checkpoint.text_of("case.source"), overrides);
   } else {
     spec = load_case(args.case_choice);
     const auto [text, source] = case_text(args.case_choice);

@@ -62,8 +62,7 @@ bool unfinished_run(const std::filesystem::path& dir, const CheckpointData& reco
   try {
     checkpoint = read_checkpoint_file(checkpoint_path(dir));
   } catch (const Error& e) {
-    spdlog::warn("validate: {} cannot be continued ({}); running it again", dir.string(),
-                 e.what());
+    spdlog::warn("validate: {} cannot be continued ({}); running it again", dir.string(), e.what());
     return false;
   }
   for (const char* key : {"case.toml", "case.source", "case.overrides"}) {

@@ -214,16 +214,17 @@ class DeviceStepper {
   std::size_t size() const { return n_; }
   /// Bytes the executor holds per particle (all buffers, capacity, and the cell table).
   double bytes_per_particle() const {
-    const std::size_t per =
-        2 * (sizeof(Vec3d) + sizeof(Vec3f) + sizeof(Real) + sizeof(ParticleKind) +
-             sizeof(std::uint32_t)) +                      // state + gather scratch
-        sizeof(std::uint32_t) + sizeof(Vec3f) +             // group, ghost (no own scratch)
-        sizeof(Vec3d) +
-        sizeof(Vec3f) + sizeof(Real) +                      // step start
-        (mirrors_ ? 12 : 9) * sizeof(Real) +                // view
-        sizeof(Vec3f) + 3 * sizeof(Real) +                  // rates
-        (s_.shifting ? sizeof(Vec3f) + sizeof(Real) : 0) +  // shifting sums
-        4 * sizeof(std::uint32_t) + sizeof(double);         // keys, order, moved
+    // pos, vel, rho, kind, id and one gather scratch of each type; group and ghost share
+    // the scratch of id and vel.
+    const std::size_t state = 2 * (sizeof(Vec3d) + sizeof(Vec3f) + sizeof(Real) +
+                                   sizeof(ParticleKind) + sizeof(std::uint32_t)) +
+                              sizeof(std::uint32_t) + sizeof(Vec3f);
+    const std::size_t start = sizeof(Vec3d) + sizeof(Vec3f) + sizeof(Real);
+    const std::size_t view = (mirrors_ ? 12 : 9) * sizeof(Real);
+    const std::size_t rates =
+        sizeof(Vec3f) + 3 * sizeof(Real) + (s_.shifting ? sizeof(Vec3f) + sizeof(Real) : 0);
+    const std::size_t sort = 4 * sizeof(std::uint32_t) + sizeof(double);  // keys, order, moved
+    const std::size_t per = state + start + view + rates + sort;
     return static_cast<double>(per) +
            static_cast<double>(cell_begin_.size() * sizeof(std::uint32_t)) /
                static_cast<double>(n_ > 0 ? n_ : 1);
