@@ -18,7 +18,6 @@ Archimedes draft and the error, the surface's range, and the body's mean vertica
 force against its weight (equilibrium check). Run it with Debian's /usr/bin/python3.
 """
 import argparse
-import csv
 import glob
 import os
 import sys
@@ -30,20 +29,18 @@ except ImportError as e:
     print(f"error: {e} (run with /usr/bin/python3; apt-get install python3-h5py)")
     sys.exit(1)
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_results import read_csv  # noqa: E402  (netsph's CSV reader, units stripped)
+
 FLUID = 0  # ParticleKind::Fluid
 
 
 def read_bodies(path, body):
     """Times, centre (x, y, z) and vertical fluid force of one body, from bodies.csv."""
-    t, c, fz = [], [], []
-    with open(path, newline="") as f:
-        for row in csv.DictReader(f):
-            if int(row["body"]) != body:
-                continue
-            t.append(float(row["time [s]"]))
-            c.append([float(row["x [m]"]), float(row["y [m]"]), float(row["z [m]"])])
-            fz.append(float(row["Fz [N]"]))
-    return np.array(t), np.array(c).reshape(-1, 3), np.array(fz)
+    data, _ = read_csv(path)
+    rows = data["body"] == body
+    centre = np.stack([data[c][rows] for c in ("x", "y", "z")], axis=1)
+    return data["time"][rows], centre, data["Fz"][rows]
 
 
 def surface_level(h5, horiz, dp, centre, half, margin, tank):
@@ -54,7 +51,7 @@ def surface_level(h5, horiz, dp, centre, half, margin, tank):
     if tank is None:
         lo, hi = xy.min(axis=0) - dp / 2, xy.max(axis=0) + dp / 2
     else:
-        lo, hi = np.array(tank[0::2][: len(horiz)]), np.array(tank[1::2][: len(horiz)])
+        lo, hi = np.array(tank[0::2]), np.array(tank[1::2])
     ncell = np.maximum(np.ceil((hi - lo) / dp).astype(np.int64), 1)
     cells = np.clip(np.floor((xy - lo) / dp).astype(np.int64), 0, ncell - 1)
     flat = np.ravel_multi_index(tuple(cells.T), tuple(ncell))
@@ -99,6 +96,8 @@ def main():
         sys.exit(f"error: no rows for body {a.body} in {a.outdir}/bodies.csv")
     t0, t1 = a.window if a.window else (t[-1] / 3, t[-1])
     horiz = [0] if a.dims == 2 else [0, 1]
+    if a.tank is not None and len(a.tank) != 2 * len(horiz):
+        sys.exit(f"error: --tank takes {2 * len(horiz)} values in {a.dims}D, got {len(a.tank)}")
     half = [a.size[k] / 2 for k in horiz]
     # An upright box of uniform section floats with draft (rho_body / rho) SZ (Archimedes).
     archimedes = a.density / a.rho * a.size[2]
