@@ -82,10 +82,13 @@ double Simulation::place_body_particles(bool from_step_start) {
     Vec3d r = rotate(b.state.q, Vec3d(b.offsets[k]));
     Vec3d ghost = rotate(b.state.q, Vec3d(b.ghosts[k]));
     if (dims2) r.y = 0, ghost.y = 0;  // rotation round-off must not leave the x-z plane
+    // Called once per stage, so the previous position is the step start's when
+    // `from_step_start` (body particles do not move in the predictor).
+    const Vec3d previous = p_.pos[i];
     p_.pos[i] = b.state.com + r;
     if (b.shows_own_velocity()) p_.vel[i] = Vec3f(rigid_point_velocity(b.state, r));
     p_.ghost[i] = Vec3f(ghost);
-    if (from_step_start) max_d2 = std::max(max_d2, norm2(p_.pos[i] - start_.pos[i]));
+    if (from_step_start) max_d2 = std::max(max_d2, norm2(p_.pos[i] - previous));
   }
   return std::sqrt(max_d2);
 }
@@ -116,16 +119,9 @@ void Simulation::advance_bodies(bool corrector, double dt) {
 
 void Simulation::sort_particles(bool mid_step) {
   const std::size_t before = p_.size();
-  if (mid_step) {
-    // Wrap the step-start positions by the same periods, so the corrector stays consistent.
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Vec3d q = grid_.wrapped(p_.pos[i]);
-      start_.pos[i] += q - p_.pos[i];
-      p_.pos[i] = q;
-    }
-  } else {
-    grid_.wrap(p_.pos);
-  }
+  // Mid-step too: the corrector advances positions from the half step (sph/symplectic.hpp),
+  // so no step-start copy needs the same wrap.
+  grid_.wrap(p_.pos);
   grid_.sort(p_.pos, order_);
   if (order_.size() < before) {
     // Dropped: outlet removals (NaN positions) and particles outside the domain (lost). Keep
@@ -141,19 +137,17 @@ void Simulation::sort_particles(bool mid_step) {
   gather_into(p_.kind, order_, scratch_kind_);
   gather_into(p_.id, order_, scratch_u32_);
   gather_into(p_.group, order_, scratch_u32_);
+  gather_into(p_.pos, order_, scratch_d3_);
   if (!mid_step) {
     // At the start of a step the step-start arrays hold nothing live: use them as scratch.
     gather_into(p_.ghost, order_, start_.vel);
-    gather_into(p_.pos, order_, start_.pos);
     gather_into(p_.vel, order_, start_.vel);
     gather_into(p_.rho, order_, start_.rho);
   } else {
     // Rare (a half step beyond the grid skin): these scratch arrays grow only then.
     gather_into(p_.ghost, order_, scratch_f3_);
-    gather_into(p_.pos, order_, scratch_d3_);
     gather_into(p_.vel, order_, scratch_f3_);
     gather_into(p_.rho, order_, scratch_f_);
-    gather_into(start_.pos, order_, scratch_d3_);
     gather_into(start_.vel, order_, scratch_f3_);
     gather_into(start_.rho, order_, scratch_f_);
   }
@@ -313,7 +307,7 @@ void Simulation::step() {
   start_.save(p_);
   reduce_body_forces();
   advance_bodies(false, dt);
-  double moved = symplectic_predictor(p_, start_, in, m);
+  double moved = symplectic_predictor(p_, in, m);
   moved = std::max(moved, place_body_particles(true));
   if (moved > grid_.max_displacement()) {
     sort_particles(true);

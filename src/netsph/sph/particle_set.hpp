@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "netsph/core/host_device.hpp"
 #include "netsph/core/real.hpp"
 #include "netsph/core/vec3.hpp"
 
@@ -19,15 +20,15 @@ enum class ParticleKind : std::uint8_t {
 };
 
 /// Particles the momentum and continuity equations move.
-inline bool is_fluid(ParticleKind k) {
+NETSPH_HD bool is_fluid(ParticleKind k) {
   return k == ParticleKind::Fluid;
 }
 /// Particles that carry fluid state as neighbours (fluid and open-boundary buffers).
-inline bool carries_fluid(ParticleKind k) {
+NETSPH_HD bool carries_fluid(ParticleKind k) {
   return k == ParticleKind::Fluid || k == ParticleKind::Buffer;
 }
 /// Boundary particles: walls and bodies.
-inline bool is_solid(ParticleKind k) {
+NETSPH_HD bool is_solid(ParticleKind k) {
   return k == ParticleKind::Wall || k == ParticleKind::Body;
 }
 

@@ -60,6 +60,7 @@ class DeviceBuffer {
   T* data() { return p_; }
   const T* data() const { return p_; }
   std::size_t size() const { return size_; }
+  std::size_t capacity() const { return cap_; }
 
  private:
   T* p_ = nullptr;
@@ -85,17 +86,21 @@ struct CudaExec {
     return t;
   }
 
-  static void sort_pairs(const std::uint32_t* keys_in, std::uint32_t* keys_out,
-                         const std::uint32_t* vals_in, std::uint32_t* vals_out, std::size_t n,
-                         int key_bits) {
+  /// Radix sort of (key, value) pairs with double buffers (O(P) temporary storage instead
+  /// of O(n)); returns whether the sorted pairs ended in the _alt buffers.
+  static bool sort_pairs(std::uint32_t* keys, std::uint32_t* keys_alt, std::uint32_t* vals,
+                         std::uint32_t* vals_alt, std::size_t n, int key_bits) {
+    if (n == 0) return false;
+    cub::DoubleBuffer<std::uint32_t> k(keys, keys_alt), v(vals, vals_alt);
     std::size_t bytes = 0;
     const int count = static_cast<int>(n);
-    cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keys_in, keys_out, vals_in, vals_out,
-                                               count, 0, key_bits),
+    cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, k, v, count, 0, key_bits),
                "radix sort (size)");
-    cuda_check(cub::DeviceRadixSort::SortPairs(temp(bytes).data(), bytes, keys_in, keys_out,
-                                               vals_in, vals_out, count, 0, key_bits),
+    cuda_check(cub::DeviceRadixSort::SortPairs(temp(bytes).data(), bytes, k, v, count, 0, key_bits),
                "radix sort");
+    if ((k.Current() == keys_alt) != (v.Current() == vals_alt))
+      throw Error("cuda", "radix sort left keys and values in different buffers");
+    return k.Current() == keys_alt;
   }
 
   template <class T>

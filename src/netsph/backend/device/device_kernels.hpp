@@ -33,11 +33,6 @@ struct DeviceWall {
   bool shows_own_velocity = true;
 };
 
-/// A wall's velocity at the step's start, half step and end (Simulation's WallKinematics).
-struct DeviceWallMotion {
-  Vec3f start{}, half{}, end{};
-};
-
 /// A rigid body as its particles need it: the state of the current stage, where its particles'
 /// body-frame offsets and ghost vectors start in the concatenated tables, and its boundary
 /// condition.
@@ -78,11 +73,14 @@ struct DeviceState {
 };
 
 /// What the interaction reads: float positions relative to the grid origin (as the CPU view,
-/// backend/cpu/interaction_view.hpp), velocities, density, pressure from the equation of state
-/// once per particle, and the fluid flag. cvx.. is the velocity continuity sees (the solid's own
-/// velocity under a mirror slip condition); it aliases vx.. when no wall mirrors.
+/// backend/cpu/interaction_view.hpp), velocities, density (the state's own array), and pressure
+/// from the equation of state once per particle. cvx.. is the velocity continuity sees (the
+/// solid's own velocity under a mirror slip condition); it aliases vx.. when no wall mirrors.
+/// Whether a neighbour is fluid comes from the kind array (1 B a particle instead of a float).
 struct DeviceView {
-  Real *x, *y, *z, *vx, *vy, *vz, *cvx, *cvy, *cvz, *rho, *press, *fluid;
+  Real *x, *y, *z, *vx, *vy, *vz, *cvx, *cvy, *cvz;
+  const Real* rho;
+  Real* press;
   /// Which solid a particle belongs to (as InteractionView::solid): -1 fluid or buffer, -2
   /// wall, else the body index. Null when the case has no bodies (no contacts to find).
   std::int32_t* solid;
@@ -90,9 +88,8 @@ struct DeviceView {
 
 /// The rates of one pass.
 struct DeviceRates {
-  Vec3f* acc;
+  Vec3f* acc;  ///< fluid: total acceleration (with gravity); body: fluid force per unit mass
   Real* drho;
-  Real* acc2;     ///< |a|^2 of fluid particles (0 for others): the force criterion of dt
   Real* visc_dt;  ///< max |h v_ab.r_ab/(r^2+eta^2)| of the particle's pairs
   Vec3f* grad_c;  ///< shifting sums, or null
   Real* div_r;
@@ -100,7 +97,7 @@ struct DeviceRates {
 
 /// The view of particle i (InteractionView::build).
 NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, const FluidModel& m,
-                                    const DeviceWall* walls, const DeviceWallMotion* motion,
+                                    const DeviceWall* walls, const WallKinematics* motion,
                                     const DeviceBody* bodies, const Vec3d& origin, std::uint32_t i,
                                     bool mirrors, bool half_step) {
   const Vec3d p = s.pos[i];
@@ -109,10 +106,8 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
   v.z[i] = static_cast<Real>(p.z - origin.z);
   const Vec3f u = s.vel[i];
   v.vx[i] = u.x, v.vy[i] = u.y, v.vz[i] = u.z;
-  v.rho[i] = s.rho[i];
   v.press[i] = m.eos.pressure(s.rho[i]);
   const ParticleKind k = s.kind[i];
-  v.fluid[i] = (k == ParticleKind::Fluid || k == ParticleKind::Buffer) ? Real(1) : Real(0);
   if (v.solid) {
     v.solid[i] = k == ParticleKind::Wall
                      ? -2
@@ -123,7 +118,7 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
     // build_view): the wall's, or the body's at this point.
     Vec3f c = u;
     if (k == ParticleKind::Wall && !walls[s.group[i]].shows_own_velocity) {
-      const DeviceWallMotion w = motion[s.group[i]];
+      const WallKinematics& w = motion[s.group[i]];
       c = half_step ? w.half : w.start;
     } else if (k == ParticleKind::Body && !bodies[s.group[i]].shows_own_velocity) {
       const RigidState& b = bodies[s.group[i]].state;
@@ -156,6 +151,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
         const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
         const Real r2 = dx * dx + dy * dy + dz * dz;
         if (!(r2 < m.support2) || b == a) continue;
+        const Real fluid_b = carries_fluid(kind[b]) ? Real(1) : Real(0);
         if (fluid_a) {
           const Neighbour nb{{dx, dy, dz},
                              r2,
@@ -164,7 +160,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
                              v.rho[b],
                              v.press[b],
                              m.mass,
-                             v.fluid[b]};
+                             fluid_b};
           const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
           ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
           vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
@@ -173,7 +169,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
             gx += vf * dx, gy += vf * dy, gz += vf * dz;
             div -= vf * r2;
           }
-        } else if (v.fluid[b] > Real(0)) {
+        } else if (fluid_b > Real(0)) {
           // A solid sees its fluid neighbours with its own velocity in continuity; a body
           // also takes their force, with gauge pressures.
           const Real p_off = body_a ? p_bg : Real(0);
@@ -184,7 +180,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
                              v.rho[b],
                              v.press[b] - p_off,
                              m.mass,
-                             v.fluid[b]};
+                             fluid_b};
           const PairRates s = body_a ? fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(
                                            m, rho_a, press_a - p_off, nb)
                                      : boundary_pair_rates<Kernel>(m, nb);
@@ -197,12 +193,10 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
   if (fluid_a) {
     const Vec3f total{ax + m.gravity.x, ay + m.gravity.y, az + m.gravity.z};
     out.acc[a] = total;
-    out.acc2[a] = total.x * total.x + total.y * total.y + total.z * total.z;
   } else {
     // Body particles: the fluid's force per unit mass, without gravity (the body's weight acts
     // on its centre of mass); walls and buffers: none.
     out.acc[a] = body_a ? Vec3f{ax, ay, az} : Vec3f{};
-    out.acc2[a] = 0;
   }
   out.drho[a] = dr;
   out.visc_dt[a] = vdt;
@@ -246,7 +240,7 @@ NETSPH_HD GhostSums device_ghost_sums(const GridIndex& g, const std::uint32_t* c
 template <class Kernel>
 NETSPH_HD void device_mdbc_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                     const DeviceState& s, const DeviceWall* walls,
-                                    const DeviceWallMotion* motion, const DeviceBody* bodies,
+                                    const WallKinematics* motion, const DeviceBody* bodies,
                                     const FluidModel& m, std::uint32_t i) {
   const ParticleKind k = s.kind[i];
   if (k != ParticleKind::Wall && k != ParticleKind::Body) return;
@@ -384,88 +378,66 @@ NETSPH_HD void device_contact_particle(const GridIndex& g, const std::uint32_t* 
 }
 
 /// Places body particle i rigidly on its body's state (Simulation::place_body_particles);
-/// returns its displacement squared from `start_pos` (null: 0).
+/// returns its displacement squared from where it was (0 unless `measure`).
 NETSPH_HD double device_place_body_particle(const DeviceState& s, const DeviceBody* bodies,
                                             const Vec3f* offsets, const Vec3f* ghosts, int dims,
-                                            const Vec3d* start_pos, std::uint32_t i) {
+                                            bool measure, std::uint32_t i) {
   if (s.kind[i] != ParticleKind::Body) return 0;
   const DeviceBody& b = bodies[s.group[i]];
   const std::uint32_t k = b.offset_base + (s.id[i] - b.first_id);
   Vec3d r = rotate(b.state.q, Vec3d(offsets[k]));
   Vec3d ghost = rotate(b.state.q, Vec3d(ghosts[k]));
   if (dims == 2) r.y = 0, ghost.y = 0;  // rotation round-off must not leave the x-z plane
+  const Vec3d previous = s.pos[i];
   s.pos[i] = b.state.com + r;
   if (b.shows_own_velocity) s.vel[i] = Vec3f(rigid_point_velocity(b.state, r));
   s.ghost[i] = Vec3f(ghost);
-  if (!start_pos) return 0;
-  const Vec3d d = s.pos[i] - start_pos[i];
+  if (!measure) return 0;
+  const Vec3d d = s.pos[i] - previous;
   return d.x * d.x + d.y * d.y + d.z * d.z;
 }
 
-/// The step-start copy of one particle.
+/// The step start's velocity and density, which the corrector starts from.
 struct DeviceStart {
-  Vec3d* pos;
   Vec3f* vel;
   Real* rho;
 };
 
-/// Predictor (half step) of particle i; returns its displacement squared. Walls move with
-/// their start velocity, buffer particles with theirs; body particles integrate continuity
-/// only (their motion is the body's; backend/cpu/integrate.cpp).
-NETSPH_HD double device_predict_particle(const DeviceState& p, const DeviceStart& s,
-                                         const DeviceRates& r, const DeviceWall* walls,
-                                         const DeviceWallMotion* motion, const FluidModel& m,
+/// Predictor (half step) of particle i, from the step-start state it holds; returns its
+/// displacement squared (sph/symplectic.hpp, as the CPU backend).
+NETSPH_HD double device_predict_particle(const DeviceState& p, const DeviceRates& r,
+                                         const WallKinematics* motion, const FluidModel& m,
                                          double dt, std::uint32_t i) {
   const ParticleKind k = p.kind[i];
-  if (k == ParticleKind::Fluid) {
-    symplectic_predict(s.pos[i], s.vel[i], s.rho[i], r.acc[i], r.drho[i], dt, p.pos[i], p.vel[i],
-                       p.rho[i]);
-  } else if (k == ParticleKind::Wall) {
-    const DeviceWallMotion w = motion[p.group[i]];
-    p.pos[i] = s.pos[i] + Vec3d(w.start) * (0.5 * dt);
-    if (walls[p.group[i]].shows_own_velocity) p.vel[i] = w.half;
-    p.rho[i] = clamp_boundary_density(symplectic_density_half(s.rho[i], r.drho[i], dt), m.eos.rho0);
-  } else if (k == ParticleKind::Buffer) {
-    // Buffer particles move with their imposed (or extrapolated) velocity, state kept.
-    p.pos[i] = s.pos[i] + Vec3d(s.vel[i]) * (0.5 * dt);
-  } else if (k == ParticleKind::Body) {
-    p.rho[i] = clamp_boundary_density(symplectic_density_half(s.rho[i], r.drho[i], dt), m.eos.rho0);
-  }
-  const Vec3d d = p.pos[i] - s.pos[i];
-  return d.x * d.x + d.y * d.y + d.z * d.z;
+  const WallKinematics* wall = k == ParticleKind::Wall ? &motion[p.group[i]] : nullptr;
+  return symplectic_predict_particle(k, wall, r.acc[i], r.drho[i], dt, m.eos.rho0, p.pos[i],
+                                     p.vel[i], p.rho[i]);
 }
 
 /// Corrector of particle i, with shifting when `shift` is given; returns false when the state
 /// is not finite.
 NETSPH_HD bool device_correct_particle(const DeviceState& p, const DeviceStart& s,
-                                       const DeviceRates& r, const DeviceWall* walls,
-                                       const DeviceWallMotion* motion, const FluidModel& m,
-                                       const ShiftingParams* shift, double dt, std::uint32_t i) {
+                                       const DeviceRates& r, const WallKinematics* motion,
+                                       const FluidModel& m, const ShiftingParams* shift, double dt,
+                                       std::uint32_t i) {
   const ParticleKind k = p.kind[i];
-  if (k == ParticleKind::Fluid) {
-    const Real rho_half = p.rho[i];
-    symplectic_correct(s.pos[i], s.vel[i], s.rho[i], r.acc[i], r.drho[i], rho_half, dt, p.pos[i],
-                       p.vel[i], p.rho[i]);
-    if (shift) {
-      const Vec3f u = p.vel[i];
-      p.pos[i] += Vec3d(shifting_displacement(*shift, r.grad_c[i], r.div_r[i],
-                                              std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z),
-                                              static_cast<Real>(dt)));
-    }
-  } else if (k == ParticleKind::Wall) {
-    const DeviceWallMotion w = motion[p.group[i]];
-    // Exact for a velocity linear in time over the step (trapezoid rule).
-    p.pos[i] = s.pos[i] + (Vec3d(w.start) + Vec3d(w.end)) * (0.5 * dt);
-    if (walls[p.group[i]].shows_own_velocity) p.vel[i] = w.end;
-    const Real rho_new = symplectic_density_full(s.rho[i], r.drho[i], p.rho[i], dt);
-    p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);
-  } else if (k == ParticleKind::Buffer) {
-    p.pos[i] = s.pos[i] + Vec3d(s.vel[i]) * dt;
-  } else if (k == ParticleKind::Body) {
-    const Real rho_new = symplectic_density_full(s.rho[i], r.drho[i], p.rho[i], dt);
-    p.rho[i] = clamp_boundary_density(rho_new, m.eos.rho0);
+  const WallKinematics* wall = k == ParticleKind::Wall ? &motion[p.group[i]] : nullptr;
+  symplectic_correct_particle(k, wall, s.vel[i], s.rho[i], r.acc[i], r.drho[i], dt, m.eos.rho0,
+                              p.pos[i], p.vel[i], p.rho[i]);
+  if (shift && k == ParticleKind::Fluid) {
+    const Vec3f u = p.vel[i];
+    p.pos[i] += Vec3d(shifting_displacement(*shift, r.grad_c[i], r.div_r[i],
+                                            std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z),
+                                            static_cast<Real>(dt)));
   }
   return finite_state(p.pos[i], p.vel[i], p.rho[i]);
+}
+
+/// The dt force criterion of particle i: |a|^2 of fluid particles, 0 for the others.
+NETSPH_HD Real device_fluid_acc2(const ParticleKind* kind, const Vec3f* acc, std::uint32_t i) {
+  if (kind[i] != ParticleKind::Fluid) return 0;
+  const Vec3f a = acc[i];
+  return a.x * a.x + a.y * a.y + a.z * a.z;
 }
 
 }  // namespace netsph

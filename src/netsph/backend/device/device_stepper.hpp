@@ -22,10 +22,16 @@
 // numbers per body back, lets the host advance the bodies (hooks.advance_bodies, the CPU
 // solver's code) and copies their new states in; the particles then follow on the device.
 //
-// Exec provides: Buffer<T> (resize, size, data, swap), for_each(n, f), sort_pairs(keys_in,
-// keys_out, vals_in, vals_out, n, key_bits), max_of(const T*, n), count_below(const uint32*,
-// n, bound), exclusive_scan(const uint32* in, uint32* out, n) -> total, upload(Buffer<T>&,
-// const T*, n), download(T*, const Buffer<T>&, n), and
+// Memory: the state (positions, velocities, densities, kinds, ids, groups, ghost offsets), the
+// step start's velocities and densities, the sorted cell keys and the cell table persist; every
+// other per-particle array lives in one work area (work_area.hpp) that the phases of a step
+// share: the view and the rates, the sort's buffers, the open boundaries' flags.
+//
+// Exec provides: Buffer<T> (resize, size, capacity, data), for_each(n, f), sort_pairs(keys,
+// keys_alt, vals, vals_alt, n, key_bits) -> whether the sorted pairs are in the _alt buffers
+// (CUB's double-buffer sort, which needs no O(n) temporary storage), max_of(const T*, n),
+// count_below(const uint32*, n, bound), exclusive_scan(const uint32* in, uint32* out, n) ->
+// total, upload(Buffer<T>&, const T*, n), download(T*, const Buffer<T>&, n), and
 // atomic_add(double*, double) callable inside f. f must be a NETSPH_LAMBDA: on CUDA it runs on
 // the device.
 #include <algorithm>
@@ -37,6 +43,7 @@
 #include <vector>
 
 #include "netsph/backend/device/device_kernels.hpp"
+#include "netsph/backend/device/work_area.hpp"
 #include "netsph/neighbors/grid_index.hpp"
 #include "netsph/sph/time_step.hpp"
 
@@ -122,6 +129,8 @@ class DeviceStepper {
                    profiles ? s_.profile_u.size() : 1);
     }
     motion_host_.resize(s_.walls.size());
+    for (std::size_t w = 0; w < s_.walls.size(); ++w)
+      motion_host_[w].shows_own_velocity = s_.walls[w].shows_own_velocity;
     Exec::upload(motion_, motion_host_.data(), motion_host_.size());
     if (has_bodies_) {
       Exec::upload(bodies_, s_.bodies.data(), s_.bodies.size());
@@ -149,8 +158,8 @@ class DeviceStepper {
     view(false);
     rates(false);
     if (has_bodies_) contacts();
-    const TimeStepInputs in{std::sqrt(static_cast<double>(Exec::max_of(acc2_.data(), n_))),
-                            static_cast<double>(Exec::max_of(visc_.data(), n_))};
+    const TimeStepInputs in{max_fluid_acceleration(),
+                            static_cast<double>(Exec::max_of(step_arrays().rates.visc_dt, n_))};
     rep.dt_limits = compute_time_step(s_.model, s_.cfl, in);
     double dt = rep.dt_limits.dt;
     if (s_.dt_max > 0) dt = dt < s_.dt_max ? dt : s_.dt_max;
@@ -212,93 +221,132 @@ class DeviceStepper {
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
   std::size_t size() const { return n_; }
-  /// Bytes the executor holds per particle (all buffers, capacity, and the cell table).
+  /// Bytes the executor holds per particle: every per-particle buffer at its capacity, the
+  /// work area and the cell table, over the particle count. (CUB's double-buffer sort and
+  /// reductions add a temporary of a few hundred kB, independent of the count.)
   double bytes_per_particle() const {
-    // pos, vel, rho, kind, id and one gather scratch of each type; group and ghost share
-    // the scratch of id and vel.
-    const std::size_t state = 2 * (sizeof(Vec3d) + sizeof(Vec3f) + sizeof(Real) +
-                                   sizeof(ParticleKind) + sizeof(std::uint32_t)) +
-                              sizeof(std::uint32_t) + sizeof(Vec3f);
-    const std::size_t start = sizeof(Vec3d) + sizeof(Vec3f) + sizeof(Real);
-    const std::size_t view = (mirrors_ ? 12 : 9) * sizeof(Real);
-    const std::size_t rates =
-        sizeof(Vec3f) + 3 * sizeof(Real) + (s_.shifting ? sizeof(Vec3f) + sizeof(Real) : 0);
-    const std::size_t sort = 4 * sizeof(std::uint32_t) + sizeof(double);  // keys, order, moved
-    const std::size_t per = state + start + view + rates + sort;
-    return static_cast<double>(per) +
-           static_cast<double>(cell_begin_.size() * sizeof(std::uint32_t)) /
-               static_cast<double>(n_ > 0 ? n_ : 1);
+    std::size_t bytes = 0;
+    const auto add = [&bytes](const auto& b) { bytes += b.capacity() * sizeof(*b.data()); };
+    add(pos_), add(vel_), add(rho_), add(kind_), add(id_), add(group_), add(ghost_);
+    add(svel_), add(srho_), add(keys_), add(cell_begin_), add(work_);
+    return static_cast<double>(bytes) / static_cast<double>(n_ > 0 ? n_ : 1);
   }
 
   // The phases of a step, public only because CUDA's device lambdas cannot live in private
   // member functions.
 
+  /// The persistent arrays hold n particles (their contents kept); then the work area.
   void alloc(std::size_t n) {
+    alloc_state(n);
+    alloc_work(n);
+  }
+  void alloc_state(std::size_t n) {
     pos_.resize(n), vel_.resize(n), rho_.resize(n), kind_.resize(n), id_.resize(n);
-    group_.resize(n), ghost_.resize(n);
-    pos2_.resize(n), vel2_.resize(n), rho2_.resize(n), kind2_.resize(n), id2_.resize(n);
-    spos_.resize(n), svel_.resize(n), srho_.resize(n);
-    for (auto* b : {&vx_, &vy_, &vz_, &x_, &y_, &z_, &vrho_, &press_, &fluid_}) b->resize(n);
-    if (mirrors_) cvx_.resize(n), cvy_.resize(n), cvz_.resize(n);
-    acc_.resize(n), drho_.resize(n), acc2_.resize(n), visc_.resize(n);
-    if (s_.shifting) grad_c_.resize(n), div_r_.resize(n);
-    keys_.resize(n), keys2_.resize(n), order_.resize(n), order2_.resize(n), moved_.resize(n);
-    if (has_bodies_) contact_.resize(n), solid_.resize(n);
+    group_.resize(n), ghost_.resize(n), svel_.resize(n), srho_.resize(n), keys_.resize(n);
     cell_begin_.resize(static_cast<std::size_t>(s_.grid.cells()) + 2);
+  }
+  /// The work area for n particles: the largest of its phases' layouts (contents not kept).
+  void alloc_work(std::size_t n) {
+    WorkCarver step(nullptr, n), sorting(nullptr, n), open(nullptr, n);
+    step_layout(step), sort_layout(sorting), open_layout(open);
+    work_.resize(std::max({step.bytes(), sorting.bytes(), open.bytes(), std::size_t{1}}));
   }
 
   DeviceState state() {
     return {pos_.data(), vel_.data(),   rho_.data(),  kind_.data(),
             id_.data(),  group_.data(), ghost_.data()};
   }
-  DeviceStart start() { return {spos_.data(), svel_.data(), srho_.data()}; }
-  DeviceView view_arrays() {
-    DeviceView v{x_.data(),     y_.data(),     z_.data(),  vx_.data(), vy_.data(),
-                 vz_.data(),    vx_.data(),    vy_.data(), vz_.data(), vrho_.data(),
-                 press_.data(), fluid_.data(), nullptr};
-    if (mirrors_) v.cvx = cvx_.data(), v.cvy = cvy_.data(), v.cvz = cvz_.data();
-    v.solid = has_bodies_ ? solid_.data() : nullptr;
-    return v;
+  DeviceStart start() { return {svel_.data(), srho_.data()}; }
+
+  /// The work area during the interaction: the view, then the rates (and contacts).
+  struct StepArrays {
+    DeviceView view;
+    DeviceRates rates;
+    Vec3f* contact;  ///< contact acceleration of body particles; null without bodies
+  };
+  StepArrays step_layout(WorkCarver& c) {
+    StepArrays a{};
+    DeviceView& v = a.view;
+    v.x = c.take<Real>(), v.y = c.take<Real>(), v.z = c.take<Real>();
+    v.vx = c.take<Real>(), v.vy = c.take<Real>(), v.vz = c.take<Real>();
+    v.cvx = v.vx, v.cvy = v.vy, v.cvz = v.vz;
+    if (mirrors_) v.cvx = c.take<Real>(), v.cvy = c.take<Real>(), v.cvz = c.take<Real>();
+    v.rho = rho_.data();
+    v.press = c.take<Real>();
+    v.solid = has_bodies_ ? c.take<std::int32_t>() : nullptr;
+    DeviceRates& r = a.rates;
+    r.acc = c.take<Vec3f>(), r.drho = c.take<Real>(), r.visc_dt = c.take<Real>();
+    r.grad_c = s_.shifting ? c.take<Vec3f>() : nullptr;
+    r.div_r = s_.shifting ? c.take<Real>() : nullptr;
+    a.contact = has_bodies_ ? c.take<Vec3f>() : nullptr;
+    return a;
   }
-  DeviceRates rate_arrays() {
-    return {acc_.data(),
-            drho_.data(),
-            acc2_.data(),
-            visc_.data(),
-            s_.shifting ? grad_c_.data() : nullptr,
-            s_.shifting ? div_r_.data() : nullptr};
+  StepArrays step_arrays() {
+    WorkCarver carve(work_.data(), n_);
+    return step_layout(carve);
+  }
+  /// One float per particle for the reductions of a step (displacements, the dt force
+  /// criterion, non-finite flags): the view's x, which those phases never overlap (they run
+  /// before the view is built or after the rates and contacts have read it).
+  Real* scalars() { return step_arrays().view.x; }
+
+  /// The work area during the sort.
+  struct SortArrays {
+    std::uint32_t *keys_alt, *order, *order_alt;
+    unsigned char* scratch;  ///< one array of the largest element type (the positions)
+  };
+  SortArrays sort_layout(WorkCarver& c) {
+    SortArrays a{};
+    a.keys_alt = c.take<std::uint32_t>();
+    a.order = c.take<std::uint32_t>(), a.order_alt = c.take<std::uint32_t>();
+    a.scratch = c.take<unsigned char>(sizeof(Vec3d));
+    return a;
+  }
+
+  /// The work area during the open boundaries' transitions and creations.
+  struct OpenArrays {
+    std::uint32_t *create, *removed, *create_at, *removed_at;
+  };
+  OpenArrays open_layout(WorkCarver& c) {
+    OpenArrays a{};
+    a.create = c.take<std::uint32_t>(), a.removed = c.take<std::uint32_t>();
+    a.create_at = c.take<std::uint32_t>(), a.removed_at = c.take<std::uint32_t>();
+    return a;
   }
 
   /// Wraps periodic axes, sorts every array by cell and rebuilds the cell table; drops the
-  /// particles outside the grid. Mid-step (after the predictor) the step-start arrays move too.
+  /// particles outside the grid. Mid-step (after the predictor) the step start's velocities
+  /// and densities move too.
   void sort(bool mid_step) {
     const GridIndex g = s_.grid;
     const DeviceState st = state();
-    const DeviceStart ss = start();
+    WorkCarver carve(work_.data(), n_);
+    const SortArrays sa = sort_layout(carve);
     std::uint32_t* keys = keys_.data();
-    std::uint32_t* order = order_.data();
+    std::uint32_t* order = sa.order;
     const bool periodic = g.periodic[0] || g.periodic[1] || g.periodic[2];
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      if (periodic) {
-        const Vec3d q = g.wrapped(st.pos[i]);
-        if (mid_step) ss.pos[i] += q - st.pos[i];
-        st.pos[i] = q;
-      }
+      if (periodic) st.pos[i] = g.wrapped(st.pos[i]);
       keys[i] = g.key_of(st.pos[i]);
       order[i] = i;
     });
     int bits = 1;
     while ((std::uint64_t{1} << bits) <= g.sentinel()) ++bits;
-    Exec::sort_pairs(keys_.data(), keys2_.data(), order_.data(), order2_.data(), n_, bits);
-    keys_.swap(keys2_);  // the sorted keys and order are now in keys_ and order2_
+    const bool in_alt = Exec::sort_pairs(keys, sa.keys_alt, order, sa.order_alt, n_, bits);
+    if (in_alt) {
+      const std::uint32_t* sorted = sa.keys_alt;
+      Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) { keys[i] = sorted[i]; });
+    }
+    const std::uint32_t* sorted_order = in_alt ? sa.order_alt : sa.order;
     const std::size_t kept = Exec::count_below(keys_.data(), n_, g.sentinel());
-    gather(pos_, pos2_, kept), gather(vel_, vel2_, kept), gather(rho_, rho2_, kept);
-    // One scratch array per element type: a gather swaps it with the array it sorted, so the
-    // same scratch serves the next array of that type (ids and groups, velocities and ghosts).
-    gather(kind_, kind2_, kept), gather(id_, id2_, kept), gather(group_, id2_, kept);
-    gather(ghost_, vel2_, kept);
-    if (mid_step)
-      gather(spos_, pos2_, kept), gather(svel_, vel2_, kept), gather(srho_, rho2_, kept);
+    gather(pos_, sorted_order, sa.scratch, kept), gather(vel_, sorted_order, sa.scratch, kept);
+    gather(rho_, sorted_order, sa.scratch, kept), gather(kind_, sorted_order, sa.scratch, kept);
+    gather(id_, sorted_order, sa.scratch, kept), gather(group_, sorted_order, sa.scratch, kept);
+    gather(ghost_, sorted_order, sa.scratch, kept);
+    if (mid_step) {
+      gather(svel_, sorted_order, sa.scratch, kept);
+      gather(srho_, sorted_order, sa.scratch, kept);
+    }
     n_ = kept;
     // cell_begin[c] = first sorted index with key >= c, for c in [0, cells + 1].
     std::uint32_t* begin = cell_begin_.data();
@@ -312,14 +360,14 @@ class DeviceStepper {
     });
   }
 
-  /// v = v[order] for the first `kept` sorted slots, through `scratch`.
+  /// v = v[order] for the first `kept` sorted slots: gathered into the scratch, copied back
+  /// (a streaming copy; the scratch is shared by every array, whatever its type).
   template <class T>
-  void gather(Buffer<T>& v, Buffer<T>& scratch, std::size_t kept) {
-    const T* src = v.data();
-    T* dst = scratch.data();
-    const std::uint32_t* order = order2_.data();
-    Exec::for_each(kept, [=] NETSPH_LAMBDA(std::uint32_t i) { dst[i] = src[order[i]]; });
-    v.swap(scratch);
+  void gather(Buffer<T>& v, const std::uint32_t* order, unsigned char* scratch, std::size_t kept) {
+    T* tmp = reinterpret_cast<T*>(scratch);
+    T* a = v.data();
+    Exec::for_each(kept, [=] NETSPH_LAMBDA(std::uint32_t i) { tmp[i] = a[order[i]]; });
+    Exec::for_each(kept, [=] NETSPH_LAMBDA(std::uint32_t i) { a[i] = tmp[i]; });
   }
 
   // Kernel types are dispatched by hand, not with with_kernel: CUDA's device lambdas cannot be
@@ -335,7 +383,7 @@ class DeviceStepper {
     const std::uint32_t* begin = cell_begin_.data();
     const DeviceState st = state();
     const DeviceWall* walls = walls_.data();
-    const DeviceWallMotion* motion = motion_.data();
+    const WallKinematics* motion = motion_.data();
     const DeviceBody* bodies = bodies_.data();
     const FluidModel m = s_.model;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
@@ -345,10 +393,10 @@ class DeviceStepper {
 
   void view(bool half_step) {
     const DeviceState st = state();
-    const DeviceView v = view_arrays();
+    const DeviceView v = step_arrays().view;
     const FluidModel m = s_.model;
     const DeviceWall* walls = walls_.data();
-    const DeviceWallMotion* motion = motion_.data();
+    const WallKinematics* motion = motion_.data();
     const DeviceBody* bodies = bodies_.data();
     const Vec3d origin = s_.grid.origin;
     const bool mirrors = mirrors_;
@@ -361,14 +409,16 @@ class DeviceStepper {
   void wall_motion(double dt) {
     if (!s_.wall_velocity) return;
     for (std::size_t w = 0; w < motion_host_.size(); ++w) {
-      motion_host_[w] = {s_.wall_velocity(w, time_), s_.wall_velocity(w, time_ + 0.5 * dt),
-                         s_.wall_velocity(w, time_ + dt)};
+      WallKinematics& k = motion_host_[w];  // shows_own_velocity is the wall's, set once
+      k.start = s_.wall_velocity(w, time_);
+      k.half = s_.wall_velocity(w, time_ + 0.5 * dt);
+      k.end = s_.wall_velocity(w, time_ + dt);
     }
     Exec::upload(motion_, motion_host_.data(), motion_host_.size());
   }
 
-  /// Body particles on their bodies' states; returns the largest displacement from the step
-  /// start when `from_start`.
+  /// Body particles on their bodies' states; returns the largest displacement when
+  /// `from_start` (after the predictor, which leaves body particles where the step started).
   double place_bodies(bool from_start) {
     if (!has_bodies_) return 0;
     const DeviceState st = state();
@@ -376,12 +426,12 @@ class DeviceStepper {
     const Vec3f* offsets = offsets_.data();
     const Vec3f* ghosts = body_ghosts_.data();
     const int dims = s_.model.dims;
-    const Vec3d* start_pos = from_start ? spos_.data() : nullptr;
-    double* moved = moved_.data();
+    Real* moved = scalars();
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      moved[i] = device_place_body_particle(st, bodies, offsets, ghosts, dims, start_pos, i);
+      moved[i] = static_cast<Real>(
+          device_place_body_particle(st, bodies, offsets, ghosts, dims, from_start, i));
     });
-    return from_start ? std::sqrt(Exec::max_of(moved_.data(), n_)) : 0.0;
+    return from_start ? std::sqrt(static_cast<double>(Exec::max_of(moved, n_))) : 0.0;
   }
 
   /// Buffer transitions, then the inlets' new buffer particles appended in index order with
@@ -390,20 +440,22 @@ class DeviceStepper {
     const DeviceState st = state();
     const ZoneGeometry* geo = zone_geo_.data();
     const std::size_t nz = s_.zones.size();
-    std::uint32_t* create = keys_.data();  // free until the sort
-    std::uint32_t* removed = keys2_.data();
+    WorkCarver carve(work_.data(), n_);
+    const OpenArrays oa = open_layout(carve);
+    std::uint32_t* create = oa.create;
+    std::uint32_t* removed = oa.removed;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
       device_transition_particle(st, geo, nz, create, removed, i);
     });
-    rep.removed = Exec::exclusive_scan(keys2_.data(), order2_.data(), n_);
-    const std::size_t created = Exec::exclusive_scan(keys_.data(), order_.data(), n_);
+    rep.removed = Exec::exclusive_scan(oa.removed, oa.removed_at, n_);
+    const std::size_t created = Exec::exclusive_scan(oa.create, oa.create_at, n_);
     rep.created = created;
     if (created == 0) return;
     const std::size_t n = n_;
-    alloc(n + created);
+    alloc_state(n + created);  // the work area, which holds the flags, grows after
     const DeviceState grown = state();
-    const std::uint32_t* flag = keys_.data();
-    const std::uint32_t* offset = order_.data();
+    const std::uint32_t* flag = oa.create;
+    const std::uint32_t* offset = oa.create_at;
     const std::uint32_t first_id = next_id_;
     const auto base = static_cast<std::uint32_t>(n);
     Exec::for_each(n, [=] NETSPH_LAMBDA(std::uint32_t i) {
@@ -412,6 +464,7 @@ class DeviceStepper {
     });
     n_ = n + created;
     next_id_ += static_cast<std::uint32_t>(created);
+    alloc_work(n_);
   }
 
   void buffer_state() {
@@ -439,9 +492,10 @@ class DeviceStepper {
     const std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* keys = keys_.data();
     const ParticleKind* kind = kind_.data();
-    const DeviceView v = view_arrays();
+    const StepArrays arrays = step_arrays();
+    const DeviceView v = arrays.view;
     const ContactModel c = s_.contact;
-    Vec3f* contact = contact_.data();
+    Vec3f* contact = arrays.contact;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
       device_contact_particle(g, begin, keys, kind, v, c, contact, a);
     });
@@ -455,8 +509,9 @@ class DeviceStepper {
     Exec::for_each(nb * 12, [=] NETSPH_LAMBDA(std::uint32_t k) { loads[k] = 0; });
     const DeviceState st = state();
     const DeviceBody* bodies = bodies_.data();
-    const Vec3f* acc = acc_.data();
-    const Vec3f* contact = contact_.data();
+    const StepArrays a = step_arrays();
+    const Vec3f* acc = a.rates.acc;
+    const Vec3f* contact = a.contact;
     const double mass = s_.model.mass;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
       if (st.kind[i] != ParticleKind::Body) return;
@@ -509,9 +564,10 @@ class DeviceStepper {
     const std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* keys = keys_.data();
     const ParticleKind* kind = kind_.data();
-    const DeviceView v = view_arrays();
+    const StepArrays arrays = step_arrays();
+    const DeviceView v = arrays.view;
     const FluidModel m = s_.model;
-    const DeviceRates out = rate_arrays();
+    const DeviceRates out = arrays.rates;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
       device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a);
     });
@@ -520,55 +576,60 @@ class DeviceStepper {
   void save_start() {
     const DeviceState st = state();
     const DeviceStart ss = start();
-    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      ss.pos[i] = st.pos[i], ss.vel[i] = st.vel[i], ss.rho[i] = st.rho[i];
-    });
+    Exec::for_each(
+        n_, [=] NETSPH_LAMBDA(std::uint32_t i) { ss.vel[i] = st.vel[i], ss.rho[i] = st.rho[i]; });
+  }
+
+  /// Largest acceleration of a fluid particle in the last rates pass, m/s^2 (dt's force
+  /// criterion).
+  double max_fluid_acceleration() {
+    const ParticleKind* kind = kind_.data();
+    const Vec3f* acc = step_arrays().rates.acc;
+    Real* acc2 = scalars();
+    Exec::for_each(
+        n_, [=] NETSPH_LAMBDA(std::uint32_t i) { acc2[i] = device_fluid_acc2(kind, acc, i); });
+    return std::sqrt(static_cast<double>(Exec::max_of(acc2, n_)));
   }
 
   /// Predictor; returns the largest displacement, m.
   double predict(double dt) {
     const DeviceState st = state();
-    const DeviceStart ss = start();
-    const DeviceRates r = rate_arrays();
-    const DeviceWall* walls = walls_.data();
-    const DeviceWallMotion* motion = motion_.data();
+    const DeviceRates r = step_arrays().rates;
+    const WallKinematics* motion = motion_.data();
     const FluidModel m = s_.model;
-    double* moved = moved_.data();
+    Real* moved = scalars();
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      moved[i] = device_predict_particle(st, ss, r, walls, motion, m, dt, i);
+      moved[i] = static_cast<Real>(device_predict_particle(st, r, motion, m, dt, i));
     });
-    return std::sqrt(Exec::max_of(moved_.data(), n_));
+    return std::sqrt(static_cast<double>(Exec::max_of(moved, n_)));
   }
 
   double max_fluid_speed() {
     const DeviceState st = state();
-    double* speed2 = moved_.data();
+    Real* speed2 = scalars();
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
       const Vec3f v = st.vel[i];
-      speed2[i] = st.kind[i] == ParticleKind::Fluid
-                      ? static_cast<double>(v.x * v.x + v.y * v.y + v.z * v.z)
-                      : 0.0;
+      speed2[i] = st.kind[i] == ParticleKind::Fluid ? v.x * v.x + v.y * v.y + v.z * v.z : Real(0);
     });
-    return std::sqrt(Exec::max_of(moved_.data(), n_));
+    return std::sqrt(static_cast<double>(Exec::max_of(speed2, n_)));
   }
 
   /// Corrector; returns false when a particle's state is not finite.
   bool correct(double dt) {
     const DeviceState st = state();
     const DeviceStart ss = start();
-    const DeviceRates r = rate_arrays();
-    const DeviceWall* walls = walls_.data();
-    const DeviceWallMotion* motion = motion_.data();
+    const DeviceRates r = step_arrays().rates;
+    const WallKinematics* motion = motion_.data();
     const FluidModel m = s_.model;
     const bool shift = s_.shifting;
     const ShiftingParams sp = s_.shift_params;
-    double* bad = moved_.data();  // reused: 1 where the state is not finite
+    Real* bad = scalars();  // 1 where the state is not finite
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      bad[i] = device_correct_particle(st, ss, r, walls, motion, m, shift ? &sp : nullptr, dt, i)
-                   ? 0.0
-                   : 1.0;
+      bad[i] = device_correct_particle(st, ss, r, motion, m, shift ? &sp : nullptr, dt, i)
+                   ? Real(0)
+                   : Real(1);
     });
-    return !(Exec::max_of(moved_.data(), n_) > 0);
+    return !(Exec::max_of(bad, n_) > 0);
   }
 
  private:
@@ -580,22 +641,20 @@ class DeviceStepper {
   double time_ = 0;
   std::int64_t steps_ = 0;
   double dt_floor_ = 0;
-  Buffer<Vec3d> pos_, pos2_, spos_;
-  Buffer<Vec3f> vel_, vel2_, svel_, ghost_, acc_, grad_c_;
-  Buffer<Real> rho_, rho2_, srho_, x_, y_, z_, vx_, vy_, vz_, cvx_, cvy_, cvz_, vrho_, press_,
-      fluid_, drho_, acc2_, visc_, div_r_;
-  Buffer<ParticleKind> kind_, kind2_;
-  Buffer<std::uint32_t> id_, id2_, group_, keys_, keys2_, order_, order2_, cell_begin_;
-  Buffer<double> moved_;
+  Buffer<Vec3d> pos_;
+  Buffer<Vec3f> vel_, ghost_, svel_;
+  Buffer<Real> rho_, srho_;
+  Buffer<ParticleKind> kind_;
+  Buffer<std::uint32_t> id_, group_, keys_, cell_begin_;
+  Buffer<unsigned char> work_;  ///< the phases' short-lived arrays (work_area.hpp)
   Buffer<DeviceWall> walls_;
-  Buffer<DeviceWallMotion> motion_;
-  std::vector<DeviceWallMotion> motion_host_;
+  Buffer<WallKinematics> motion_;
+  std::vector<WallKinematics> motion_host_;
   Buffer<DeviceZone> zones_;
   Buffer<ZoneGeometry> zone_geo_;
   Buffer<double> profile_z_, profile_u_;
   Buffer<DeviceBody> bodies_;
-  Buffer<Vec3f> offsets_, body_ghosts_, contact_;
-  Buffer<std::int32_t> solid_;
+  Buffer<Vec3f> offsets_, body_ghosts_;
   Buffer<DeviceBodyLoads> loads_;
   std::vector<DeviceBodyLoads> loads_host_;
   std::vector<RigidState> states_;

@@ -23,16 +23,23 @@ struct HostExec {
     for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::uint32_t>(i));
   }
 
-  /// Stable sort of (key, value) pairs by key, as cub::DeviceRadixSort::SortPairs.
-  static void sort_pairs(const std::uint32_t* keys_in, std::uint32_t* keys_out,
-                         const std::uint32_t* vals_in, std::uint32_t* vals_out, std::size_t n,
-                         int /*key_bits*/) {
+  /// Stable sort of (key, value) pairs by key, as cub::DeviceRadixSort::SortPairs with
+  /// double buffers: returns whether the sorted pairs are in the _alt buffers. Like an LSD
+  /// radix sort of 8-bit digits, they are there after an odd number of passes, so that tests
+  /// on the host take both of the caller's paths.
+  static bool sort_pairs(std::uint32_t* keys, std::uint32_t* keys_alt, std::uint32_t* vals,
+                         std::uint32_t* vals_alt, std::size_t n, int key_bits) {
     std::vector<std::uint32_t> idx(n);
     std::iota(idx.begin(), idx.end(), 0u);
     std::stable_sort(idx.begin(), idx.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return keys_in[a] < keys_in[b]; });
-    for (std::size_t i = 0; i < n; ++i)
-      keys_out[i] = keys_in[idx[i]], vals_out[i] = vals_in[idx[i]];
+                     [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+    for (std::size_t i = 0; i < n; ++i) keys_alt[i] = keys[idx[i]], vals_alt[i] = vals[idx[i]];
+    const bool odd_passes = ((key_bits + 7) / 8) % 2 == 1;
+    if (!odd_passes) {
+      std::copy(keys_alt, keys_alt + n, keys);
+      std::copy(vals_alt, vals_alt + n, vals);
+    }
+    return odd_passes;
   }
 
   template <class T>
