@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Measures the draft of a floating box from a netsph run, against Archimedes.
+"""Measures the draft of a floating or fixed box from a netsph run, against Archimedes.
 
-Usage: measure_draft.py OUTDIR --size SX SY SZ --density RHO_BODY --dp DP
+Usage: measure_draft.py OUTDIR --size SX SY SZ --dp DP [--density RHO_BODY]
                         [--dims 3] [--body 0] [--rho 1000] [--window T0 T1]
                         [--margin 0.03] [--tank XMIN XMAX [YMIN YMAX]]
 
@@ -14,8 +14,10 @@ extent of the fluid). Vertical is z, as in netsph's 2D (x-z) and 3D cases. Archi
 draft of an upright box of uniform section is (RHO_BODY / RHO) SZ.
 
 Prints the mean draft over the window (default: from a third of the run to its end), the
-Archimedes draft and the error, the surface's range, and the body's mean vertical fluid
-force against its weight (equilibrium check). Run it with Debian's /usr/bin/python3.
+surface's range, the body's mean vertical fluid force against Archimedes' force at the
+measured draft (RHO g SX SY draft; 2D: per metre: the buoyancy of a fixed box), and with
+RHO_BODY (a floating box) the Archimedes draft, the error and the force against the weight
+(equilibrium check). Run it with Debian's /usr/bin/python3.
 """
 import argparse
 import glob
@@ -76,7 +78,7 @@ def main():
     ap.add_argument("outdir", help="the run's output folder")
     ap.add_argument("--size", type=float, nargs=3, required=True, metavar=("SX", "SY", "SZ"),
                     help="box size [m] (2D: SY is ignored)")
-    ap.add_argument("--density", type=float, required=True, help="body density [kg/m^3]")
+    ap.add_argument("--density", type=float, help="body density [kg/m^3] (a floating box)")
     ap.add_argument("--dp", type=float, required=True, help="the run's particle spacing [m]")
     ap.add_argument("--dims", type=int, choices=(2, 3), default=3, help="2D (x-z) or 3D run")
     ap.add_argument("--body", type=int, default=0, help="body index in bodies.csv")
@@ -99,9 +101,7 @@ def main():
     if a.tank is not None and len(a.tank) != 2 * len(horiz):
         sys.exit(f"error: --tank takes {2 * len(horiz)} values in {a.dims}D, got {len(a.tank)}")
     half = [a.size[k] / 2 for k in horiz]
-    # An upright box of uniform section floats with draft (rho_body / rho) SZ (Archimedes).
-    archimedes = a.density / a.rho * a.size[2]
-    weight = a.density * a.size[0] * (a.size[1] if a.dims == 3 else 1.0) * a.size[2] * a.gravity
+    section = a.size[0] * (a.size[1] if a.dims == 3 else 1.0)  # 2D: per metre
 
     drafts, levels = [], []
     for path in sorted(glob.glob(os.path.join(a.outdir, "snapshots", "particles_*.h5"))):
@@ -119,13 +119,19 @@ def main():
         sys.exit(f"error: no snapshot in the window [{t0}, {t1}] s")
     sel = (t >= t0) & (t <= t1)
     draft = float(np.mean(drafts))
+    force = float(np.mean(fz[sel]))
+    buoyancy = a.rho * a.gravity * section * draft
     print(f"window {t0:.3g}-{t1:.3g} s, {len(drafts)} snapshots")
-    print(f"mean draft {draft:.4f} m, Archimedes {archimedes:.4f} m, "
-          f"error {100 * (draft / archimedes - 1):+.1f}%")
-    print(f"draft range {min(drafts):.4f}-{max(drafts):.4f} m; "
-          f"surface {min(levels):.4f}-{max(levels):.4f} m")
-    print(f"mean vertical fluid force {np.mean(fz[sel]):.2f} N, weight {weight:.2f} N "
-          f"(2D: per metre)")
+    print(f"mean draft {draft:.4f} m (range {min(drafts):.4f}-{max(drafts):.4f} m; "
+          f"surface {min(levels):.4f}-{max(levels):.4f} m)")
+    print(f"mean vertical fluid force {force:.2f} N, rho g A draft {buoyancy:.2f} N: "
+          f"ratio {force / buoyancy:.3f} (2D: per metre)")
+    if a.density is not None:
+        # An upright box of uniform section floats with draft (rho_body / rho) SZ (Archimedes).
+        archimedes = a.density / a.rho * a.size[2]
+        weight = a.density * section * a.size[2] * a.gravity
+        print(f"Archimedes draft {archimedes:.4f} m: error {100 * (draft / archimedes - 1):+.1f}%; "
+              f"force / weight {force / weight:.3f}")
 
 
 if __name__ == "__main__":
