@@ -625,9 +625,7 @@ class DeviceStepper {
     const ShiftingParams sp = s_.shift_params;
     Real* bad = scalars();  // 1 where the state is not finite
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      bad[i] = device_correct_particle(st, ss, r, motion, m, shift ? &sp : nullptr, dt, i)
-                   ? Real(0)
-                   : Real(1);
+      bad[i] = device_correct_particle(st, ss, r, motion, m, shift, sp, dt, i) ? Real(0) : Real(1);
     });
     return !(Exec::max_of(bad, n_) > 0);
   }
