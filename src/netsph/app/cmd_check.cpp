@@ -22,7 +22,8 @@ int check_command(const CheckArgs& args) {
         spec.nets.size());
     return 0;
   }
-  Simulation sim(spec);
+  const std::string backend = resolve_backend(args.backend);
+  Simulation sim(spec, step_backend(backend));
   log_scene(sim);
 
   // A short timing sample: the first step also sizes every work array, so memory is known.
@@ -44,13 +45,15 @@ int check_command(const CheckArgs& args) {
   const double n_total = spec.simulation.end_time / mean_dt;
   const double np = static_cast<double>(sim.particles().size());
 
-  spdlog::info("memory: {:.0f} bytes/particle, {:.1f} MiB in all", sim.bytes_per_particle(),
-               sim.bytes_per_particle() * np / (1024.0 * 1024.0));
+  spdlog::info("memory ({} backend): {:.0f} bytes/particle, {:.1f} MiB in all", backend,
+               sim.bytes_per_particle(), sim.bytes_per_particle() * np / (1024.0 * 1024.0));
   spdlog::info(
       "initial dt = {:.3g} s (CFL {:g}; force limit {:.3g} s, acoustic-viscous limit {:.3g} s)",
       dt0, spec.simulation.cfl, lim.force, lim.acoustic);
-  spdlog::info("timing sample: {} steps in {:.2f} s on {} threads = {:.3g} particle-steps/s", n,
-               wall, threads, np * n / wall);
+  spdlog::info(
+      "timing sample: {} steps in {:.2f} s on {} threads = {:.3g} particle-steps/s{}", n, wall,
+      threads, np * n / wall,
+      backend == "host-device" ? " (the CUDA kernels run on the CPU: not a GPU's speed)" : "");
   spdlog::info(
       "estimate for end_time = {:g} s: about {:.3g} steps, {} (dt varies as the flow "
       "develops: take this as an order of magnitude)",

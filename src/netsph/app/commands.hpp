@@ -41,6 +41,7 @@ struct CheckArgs {
   CaseChoice case_choice;
   int threads = 0;
   int sample_steps = 20;
+  std::string backend = "auto";  ///< whose memory and speed the check reports
 };
 int check_command(const CheckArgs& args);
 

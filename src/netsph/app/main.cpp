@@ -87,6 +87,11 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--threads", check.threads, "OpenMP threads (0: all cores)");
   check_cmd->add_option("--sample-steps", check.sample_steps, "steps timed for the estimate")
       ->capture_default_str();
+  check_cmd
+      ->add_option("--backend", check.backend,
+                   "the backend whose memory and speed to report: auto, cpu, cuda, or "
+                   "host-device (the CUDA step's memory, measured without a GPU)")
+      ->capture_default_str();
 
   BenchArgs bench;
   std::string sizes = "1e5,2.4e5,1e6";
