@@ -73,12 +73,15 @@ Difference compare(const std::string& name, const std::vector<std::string>& over
   }
   const auto& bodies = cpu.bodies();
   EXPECT_EQ(bodies.size(), dev.bodies().size());
+  // Fluid and contact forces (the device sums them in different kernels).
   double fmax = 1e-12;
-  for (const RigidBody& b : bodies) fmax = std::max(fmax, norm(b.fluid_force));
+  for (const RigidBody& b : bodies)
+    fmax = std::max({fmax, norm(b.fluid_force), norm(b.contact_force)});
   for (std::size_t b = 0; b < bodies.size() && b < dev.bodies().size(); ++b) {
-    d.body_pos = std::max(d.body_pos, norm(bodies[b].state.com - dev.bodies()[b].state.com) / dp);
-    d.body_force =
-        std::max(d.body_force, norm(bodies[b].fluid_force - dev.bodies()[b].fluid_force) / fmax);
+    const RigidBody &c = bodies[b], &g = dev.bodies()[b];
+    d.body_pos = std::max(d.body_pos, norm(c.state.com - g.state.com) / dp);
+    d.body_force = std::max({d.body_force, norm(c.fluid_force - g.fluid_force) / fmax,
+                             norm(c.contact_force - g.contact_force) / fmax});
   }
   return d;
 }

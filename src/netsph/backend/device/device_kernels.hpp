@@ -81,9 +81,6 @@ struct DeviceView {
   Real *x, *y, *z, *vx, *vy, *vz, *cvx, *cvy, *cvz;
   const Real* rho;
   Real* press;
-  /// Which solid a particle belongs to (as InteractionView::solid): -1 fluid or buffer, -2
-  /// wall, else the body index. Null when the case has no bodies (no contacts to find).
-  std::int32_t* solid;
 };
 
 /// The rates of one pass.
@@ -108,11 +105,6 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
   v.vx[i] = u.x, v.vy[i] = u.y, v.vz[i] = u.z;
   v.press[i] = m.eos.pressure(s.rho[i]);
   const ParticleKind k = s.kind[i];
-  if (v.solid) {
-    v.solid[i] = k == ParticleKind::Wall
-                     ? -2
-                     : (k == ParticleKind::Body ? static_cast<std::int32_t>(s.group[i]) : -1);
-  }
   if (mirrors) {
     // A solid under a mirror slip condition shows continuity its own velocity (Simulation::
     // build_view): the wall's, or the body's at this point.
@@ -353,28 +345,35 @@ NETSPH_HD void device_buffer_state_particle(const GridIndex& g, const std::uint3
   if (!z.velocity_imposed) s.vel[i] = Vec3f(gv.vel);
 }
 
-/// Contact acceleration of body particle i from the particles of other solids
-/// (backend/cpu/contact.cpp).
-NETSPH_HD void device_contact_particle(const GridIndex& g, const std::uint32_t* cell_begin,
-                                       const std::uint32_t* keys, const ParticleKind* kind,
-                                       const DeviceView& v, const ContactModel& model,
-                                       Vec3f* contact, std::uint32_t a) {
-  if (kind[a] != ParticleKind::Body) {
-    contact[a] = Vec3f{};
-    return;
-  }
-  const std::int32_t self = v.solid[a];
+/// Which solid particle i belongs to (as InteractionView::solid): -1 fluid or buffer, -2 wall,
+/// else its body's index. Read from the kind and group arrays rather than stored: 4 B a
+/// particle less on the device.
+NETSPH_HD std::int32_t device_solid_of(const ParticleKind* kind, const std::uint32_t* group,
+                                       std::uint32_t i) {
+  const ParticleKind k = kind[i];
+  if (k == ParticleKind::Wall) return -2;
+  return k == ParticleKind::Body ? static_cast<std::int32_t>(group[i]) : -1;
+}
+
+/// Contact acceleration of body particle a from the particles of other solids
+/// (backend/cpu/contact.cpp); zero for other particles.
+NETSPH_HD Vec3f device_contact_particle(const GridIndex& g, const std::uint32_t* cell_begin,
+                                        const std::uint32_t* keys, const ParticleKind* kind,
+                                        const std::uint32_t* group, const DeviceView& v,
+                                        const ContactModel& model, std::uint32_t a) {
+  if (kind[a] != ParticleKind::Body) return {};
+  const std::int32_t self = static_cast<std::int32_t>(group[a]);
   Vec3f acc{};
   g.for_each_range(cell_begin, keys[a], [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
     const Vec3f pa(v.x[a] - shift.x, v.y[a] - shift.y, v.z[a] - shift.z);
     for (std::uint32_t b = b0; b < b1; ++b) {
-      const std::int32_t other = v.solid[b];
+      const std::int32_t other = device_solid_of(kind, group, b);
       if (other == -1 || other == self) continue;
       acc += contact_acceleration(model, pa - Vec3f(v.x[b], v.y[b], v.z[b]),
                                   Vec3f(v.vx[a] - v.vx[b], v.vy[a] - v.vy[b], v.vz[a] - v.vz[b]));
     }
   });
-  contact[a] = acc;
+  return acc;
 }
 
 /// Places body particle i rigidly on its body's state (Simulation::place_body_particles);
@@ -433,6 +432,14 @@ NETSPH_HD bool device_correct_particle(const DeviceState& p, const DeviceStart& 
                                             static_cast<Real>(dt)));
   }
   return finite_state(p.pos[i], p.vel[i], p.rho[i]);
+}
+
+/// The loads one body particle adds to its body: force m a and its torque about the centre of
+/// mass, r x m a (world frame; Simulation::reduce_body_forces).
+NETSPH_HD void device_particle_load(const Vec3d& r, const Vec3f& acc, double mass, double out[6]) {
+  const Vec3d f = Vec3d(acc) * mass;
+  const Vec3d t = cross(r, f);
+  out[0] = f.x, out[1] = f.y, out[2] = f.z, out[3] = t.x, out[4] = t.y, out[5] = t.z;
 }
 
 /// The dt force criterion of particle i: |a|^2 of fluid particles, 0 for the others.

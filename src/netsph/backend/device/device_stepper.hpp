@@ -258,11 +258,10 @@ class DeviceStepper {
   }
   DeviceStart start() { return {svel_.data(), srho_.data()}; }
 
-  /// The work area during the interaction: the view, then the rates (and contacts).
+  /// The work area during the interaction: the view, then the rates.
   struct StepArrays {
     DeviceView view;
     DeviceRates rates;
-    Vec3f* contact;  ///< contact acceleration of body particles; null without bodies
   };
   StepArrays step_layout(WorkCarver& c) {
     StepArrays a{};
@@ -273,12 +272,10 @@ class DeviceStepper {
     if (mirrors_) v.cvx = c.take<Real>(), v.cvy = c.take<Real>(), v.cvz = c.take<Real>();
     v.rho = rho_.data();
     v.press = c.take<Real>();
-    v.solid = has_bodies_ ? c.take<std::int32_t>() : nullptr;
     DeviceRates& r = a.rates;
     r.acc = c.take<Vec3f>(), r.drho = c.take<Real>(), r.visc_dt = c.take<Real>();
     r.grad_c = s_.shifting ? c.take<Vec3f>() : nullptr;
     r.div_r = s_.shifting ? c.take<Real>() : nullptr;
-    a.contact = has_bodies_ ? c.take<Vec3f>() : nullptr;
     return a;
   }
   StepArrays step_arrays() {
@@ -487,42 +484,48 @@ class DeviceStepper {
     });
   }
 
+  /// Zeroes the bodies' loads, then adds their contact forces and torques (loads 6-11) where
+  /// they arise: each body particle's contact acceleration goes straight into its body's sums,
+  /// so no per-particle array holds it. The stage's fluid loads follow in advance_bodies.
   void contacts() {
+    double* loads = reinterpret_cast<double*>(loads_.data());
+    Exec::for_each(s_.bodies.size() * 12, [=] NETSPH_LAMBDA(std::uint32_t k) { loads[k] = 0; });
     const GridIndex g = s_.grid;
     const std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* keys = keys_.data();
-    const ParticleKind* kind = kind_.data();
-    const StepArrays arrays = step_arrays();
-    const DeviceView v = arrays.view;
+    const DeviceState st = state();
+    const DeviceBody* bodies = bodies_.data();
+    const DeviceView v = step_arrays().view;
     const ContactModel c = s_.contact;
-    Vec3f* contact = arrays.contact;
+    const double mass = s_.model.mass;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
-      device_contact_particle(g, begin, keys, kind, v, c, contact, a);
+      const Vec3f acc = device_contact_particle(g, begin, keys, st.kind, st.group, v, c, a);
+      if (acc.x == 0 && acc.y == 0 && acc.z == 0) return;
+      const std::uint32_t b = st.group[a];
+      double load[6];
+      device_particle_load(st.pos[a] - bodies[b].state.com, acc, mass, load);
+      for (int k = 0; k < 6; ++k) {
+        if (load[k] != 0) Exec::atomic_add(loads + 12 * b + 6 + k, load[k]);
+      }
     });
   }
 
-  /// Reduces the bodies' loads on the executor, advances the bodies on the host and copies
-  /// their states back.
+  /// Adds the bodies' fluid loads (0-5) to the contact loads of this stage, advances the
+  /// bodies on the host and copies their states back.
   void advance_bodies(bool corrector, double dt) {
     const std::size_t nb = s_.bodies.size();
     double* loads = reinterpret_cast<double*>(loads_.data());
-    Exec::for_each(nb * 12, [=] NETSPH_LAMBDA(std::uint32_t k) { loads[k] = 0; });
     const DeviceState st = state();
     const DeviceBody* bodies = bodies_.data();
-    const StepArrays a = step_arrays();
-    const Vec3f* acc = a.rates.acc;
-    const Vec3f* contact = a.contact;
+    const Vec3f* acc = step_arrays().rates.acc;
     const double mass = s_.model.mass;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
       if (st.kind[i] != ParticleKind::Body) return;
       const std::uint32_t b = st.group[i];
-      const Vec3d r = st.pos[i] - bodies[b].state.com;
-      const Vec3d f = Vec3d(acc[i]) * mass, fc = Vec3d(contact[i]) * mass;
-      const Vec3d t = cross(r, f), tc = cross(r, fc);
-      double* out = loads + 12 * b;
-      const double v[12] = {f.x, f.y, f.z, t.x, t.y, t.z, fc.x, fc.y, fc.z, tc.x, tc.y, tc.z};
-      for (int k = 0; k < 12; ++k) {
-        if (v[k] != 0) Exec::atomic_add(out + k, v[k]);
+      double load[6];
+      device_particle_load(st.pos[i] - bodies[b].state.com, acc[i], mass, load);
+      for (int k = 0; k < 6; ++k) {
+        if (load[k] != 0) Exec::atomic_add(loads + 12 * b + k, load[k]);
       }
     });
     Exec::download(loads_host_.data(), loads_, nb);
