@@ -51,4 +51,11 @@ NETSPH_HD Vec3f shifting_displacement(const ShiftingParams& s, const Vec3f& grad
   return {cap(d.x), cap(d.y), cap(d.z)};
 }
 
+/// Shifts a fluid particle after the corrector: its new velocity v sets the displacement's
+/// scale. Both backends' correctors call this.
+NETSPH_HD void shift_position(const ShiftingParams& s, const Vec3f& grad_c, Real div_r,
+                              const Vec3f& v, double dt, Vec3d& r) {
+  r += Vec3d(shifting_displacement(s, grad_c, div_r, norm(v), static_cast<Real>(dt)));
+}
+
 }  // namespace netsph

@@ -40,11 +40,9 @@ std::int64_t symplectic_corrector(ParticleSet& p, const StepStart& s, const Stag
     const WallKinematics* wall = k == ParticleKind::Wall ? &in.walls[p.group[i]] : nullptr;
     symplectic_correct_particle(k, wall, s.vel[i], s.rho[i], in.acc[i], in.drho[i], dt, m.eos.rho0,
                                 p.pos[i], p.vel[i], p.rho[i]);
-    if (shifting && k == ParticleKind::Fluid) {
-      p.pos[i] +=
-          Vec3d(shifting_displacement(*shift_params, shifting->grad_c[i], shifting->div_r[i],
-                                      norm(p.vel[i]), static_cast<Real>(dt)));
-    }
+    if (shifting && k == ParticleKind::Fluid)
+      shift_position(*shift_params, shifting->grad_c[i], shifting->div_r[i], p.vel[i], dt,
+                     p.pos[i]);
     if (!finite_state(p.pos[i], p.vel[i], p.rho[i])) bad = std::min(bad, i);
   }
   return bad == n ? -1 : bad;

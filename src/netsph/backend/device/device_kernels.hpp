@@ -425,12 +425,8 @@ NETSPH_HD bool device_correct_particle(const DeviceState& p, const DeviceStart& 
   const WallKinematics* wall = k == ParticleKind::Wall ? &motion[p.group[i]] : nullptr;
   symplectic_correct_particle(k, wall, s.vel[i], s.rho[i], r.acc[i], r.drho[i], dt, m.eos.rho0,
                               p.pos[i], p.vel[i], p.rho[i]);
-  if (shift && k == ParticleKind::Fluid) {
-    const Vec3f u = p.vel[i];
-    p.pos[i] += Vec3d(shifting_displacement(shift_params, r.grad_c[i], r.div_r[i],
-                                            std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z),
-                                            static_cast<Real>(dt)));
-  }
+  if (shift && k == ParticleKind::Fluid)
+    shift_position(shift_params, r.grad_c[i], r.div_r[i], p.vel[i], dt, p.pos[i]);
   return finite_state(p.pos[i], p.vel[i], p.rho[i]);
 }
 
