@@ -72,23 +72,19 @@ double Simulation::place_body_particles(bool from_step_start) {
   auto& bodies = scene_.bodies;
   if (bodies.empty()) return 0;
   const auto n = static_cast<std::int64_t>(p_.size());
-  const bool dims2 = scene_.model.dims == 2;
+  const int dims = scene_.model.dims;
   double max_d2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max_d2)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p_.kind[i] != ParticleKind::Body) continue;
     const RigidBody& b = bodies[p_.group[i]];
     const std::uint32_t k = p_.id[i] - b.first_id;
-    Vec3d r = rotate(b.state.q, Vec3d(b.offsets[k]));
-    Vec3d ghost = rotate(b.state.q, Vec3d(b.ghosts[k]));
-    if (dims2) r.y = 0, ghost.y = 0;  // rotation round-off must not leave the x-z plane
     // Called once per stage, so the previous position is the step start's when
     // `from_step_start` (body particles do not move in the predictor).
-    const Vec3d previous = p_.pos[i];
-    p_.pos[i] = b.state.com + r;
-    if (b.shows_own_velocity()) p_.vel[i] = Vec3f(rigid_point_velocity(b.state, r));
-    p_.ghost[i] = Vec3f(ghost);
-    if (from_step_start) max_d2 = std::max(max_d2, norm2(p_.pos[i] - previous));
+    const double d2 =
+        place_rigid_particle(b.state, b.offsets[k], b.ghosts[k], dims, b.shows_own_velocity(),
+                             p_.pos[i], p_.vel[i], p_.ghost[i]);
+    if (from_step_start) max_d2 = std::max(max_d2, d2);
   }
   return std::sqrt(max_d2);
 }

@@ -384,16 +384,9 @@ NETSPH_HD double device_place_body_particle(const DeviceState& s, const DeviceBo
   if (s.kind[i] != ParticleKind::Body) return 0;
   const DeviceBody& b = bodies[s.group[i]];
   const std::uint32_t k = b.offset_base + (s.id[i] - b.first_id);
-  Vec3d r = rotate(b.state.q, Vec3d(offsets[k]));
-  Vec3d ghost = rotate(b.state.q, Vec3d(ghosts[k]));
-  if (dims == 2) r.y = 0, ghost.y = 0;  // rotation round-off must not leave the x-z plane
-  const Vec3d previous = s.pos[i];
-  s.pos[i] = b.state.com + r;
-  if (b.shows_own_velocity) s.vel[i] = Vec3f(rigid_point_velocity(b.state, r));
-  s.ghost[i] = Vec3f(ghost);
-  if (!measure) return 0;
-  const Vec3d d = s.pos[i] - previous;
-  return d.x * d.x + d.y * d.y + d.z * d.z;
+  const double d2 = place_rigid_particle(b.state, offsets[k], ghosts[k], dims, b.shows_own_velocity,
+                                         s.pos[i], s.vel[i], s.ghost[i]);
+  return measure ? d2 : 0.0;
 }
 
 /// The step start's velocity and density, which the corrector starts from.
