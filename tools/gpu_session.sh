@@ -3,7 +3,7 @@
 # importance, each under its own time limit so that the whole fits one device call (about 9
 # minutes):
 #   1. the CUDA parity tests (tests/physics/device_parity_test.cpp, DeviceParity.Cuda*)
-#   2. netsph bench --backend cuda at 1e6, 1e7 and 5e7 particles
+#   2. netsph bench --backend cuda at 1e6, 1e7 and 5e7 particles, with the step's phases
 #   3. the paper's flexible net at full resolution (1.35e8 particles): `netsph check` builds
 #      it, steps it on the GPU and reports its memory and the time per simulated second
 #   4. if time is left, the 3D floating box at dp = 0.01 m, a whole run with every output
@@ -25,9 +25,10 @@ run() {  # run LIMIT NAME COMMAND...: the command's output in r/NAME.log
   echo "   exit $?" | tee -a "$out/r/index.txt"
 }
 run 90 parity .gpu/device_parity_test --gtest_filter='DeviceParity.Cuda*'
-run 120 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --json "$out/r/bench.json"
+run 130 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --profile \
+  --json "$out/r/bench.json"
 run 240 bi2014_full .gpu/netsph check builtin:paper/net_bi2014 --backend cuda --sample-steps 10
-run 100 float3d .gpu/netsph run builtin:floating_box3d --backend cuda --set simulation.dp=0.01 \
+run 90 float3d .gpu/netsph run builtin:floating_box3d --backend cuda --set simulation.dp=0.01 \
   --no-plots --plain-progress -o "$out/float3d"
 for d in "$out"/float3d; do
   [ -d "$d" ] && cp "$d/summary.json" "$out/r/$(basename "$d")_summary.json" 2>/dev/null

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -30,7 +31,33 @@ struct BenchRow {
   std::size_t particles = 0;
   int steps = 0;
   double wall_s = 0, rate = 0, bytes = 0;
+  std::optional<DevicePhaseTimes> phases;
+  double profiled_wall_s = 0;
 };
+
+/// Times `steps` more steps of `sim` with the device step's phase profile on.
+void profile_phases(Simulation& sim, int steps, BenchRow& row) {
+  sim.set_device_profiling(true);
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int s = 0; s < steps; ++s) sim.step();
+  row.profiled_wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  row.phases = sim.device_phase_times();
+  sim.set_device_profiling(false);
+}
+
+void print_phases(const BenchRow& row) {
+  const DevicePhaseTimes& t = *row.phases;
+  fmt::print("    phases over {} profiled steps ({:.3f} s; timed phases {:.3f} s):\n", row.steps,
+             row.profiled_wall_s, t.total());
+  fmt::print("    {:<16} {:>12} {:>7} {:>12}\n", "phase", "ms/step", "share", "calls/step");
+  for (std::size_t k = 0; k < kDevicePhaseNames.size(); ++k) {
+    if (t.calls[k] == 0) continue;
+    fmt::print("    {:<16} {:>12.3f} {:>6.1f}% {:>12.1f}\n", kDevicePhaseNames[k],
+               1e3 * t.seconds[k] / row.steps, 100 * t.seconds[k] / t.total(),
+               static_cast<double>(t.calls[k]) / row.steps);
+  }
+}
 
 }  // namespace
 
@@ -38,6 +65,10 @@ int bench_command(const BenchArgs& args) {
   const std::string backend = resolve_backend(args.backend);
   const int threads = apply_threads(args.threads);
   if (args.steps < 1) throw Error("--steps", "must be >= 1");
+  if (args.profile && backend == "cpu")
+    throw Error("--profile",
+                "the phase profile is of the device step (--backend cuda or "
+                "host-device); profile the CPU step with perf (docs/PERFORMANCE.md)");
   // Particle count at the reference dp, to pick dp for each requested size (N ~ dp^-3).
   const double n_ref = static_cast<double>(Simulation(bench_case(kReferenceDp)).particles().size());
   spdlog::info(
@@ -65,6 +96,10 @@ int bench_command(const BenchArgs& args) {
     row.rate = static_cast<double>(row.particles) * args.steps / row.wall_s;
     fmt::print("{:>12} {:>10.5f} {:>7} {:>9.2f} {:>18.3e} {:>14.0f}\n", row.particles, row.dp,
                row.steps, row.wall_s, row.rate, row.bytes);
+    if (args.profile) {
+      profile_phases(sim, args.steps, row);
+      print_phases(row);
+    }
     std::fflush(stdout);
     rows.push_back(row);
   }
@@ -74,12 +109,21 @@ int bench_command(const BenchArgs& args) {
     j["backend"] = backend;
     j["threads"] = threads;
     for (const auto& r : rows) {
-      j["runs"].push_back({{"particles", r.particles},
-                           {"dp_m", r.dp},
-                           {"steps", r.steps},
-                           {"wall_s", r.wall_s},
-                           {"particle_steps_per_s", r.rate},
-                           {"bytes_per_particle", r.bytes}});
+      nlohmann::json run{{"particles", r.particles},
+                         {"dp_m", r.dp},
+                         {"steps", r.steps},
+                         {"wall_s", r.wall_s},
+                         {"particle_steps_per_s", r.rate},
+                         {"bytes_per_particle", r.bytes}};
+      if (r.phases) {
+        run["profiled_wall_s"] = r.profiled_wall_s;
+        for (std::size_t k = 0; k < kDevicePhaseNames.size(); ++k) {
+          run["phases"][std::string(kDevicePhaseNames[k])] = {
+              {"ms_per_step", 1e3 * r.phases->seconds[k] / r.steps},
+              {"calls_per_step", static_cast<double>(r.phases->calls[k]) / r.steps}};
+        }
+      }
+      j["runs"].push_back(run);
     }
     std::ofstream(args.json_path) << j.dump(2) << "\n";
   }

@@ -51,6 +51,8 @@ struct BenchArgs {
   int threads = 0;
   std::string backend = "auto";
   std::string json_path;
+  /// Also time the device step's phases (after the timed steps, over as many again).
+  bool profile = false;
 };
 int bench_command(const BenchArgs& args);
 

@@ -104,6 +104,9 @@ int main(int argc, char** argv) {
       ->add_option("--backend", bench.backend, "auto (the CPU for now), cpu, cuda or host-device")
       ->capture_default_str();
   bench_cmd->add_option("--json", bench.json_path, "also write the results to this JSON file");
+  bench_cmd->add_flag("--profile", bench.profile,
+                      "device backends: then time the step's phases over as many steps again "
+                      "(each phase waits for the device, so this run is a little slower)");
 
   NetArgs net;
   auto* net_cmd = app.add_subcommand(

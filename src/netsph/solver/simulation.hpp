@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,12 @@ class Simulation {
   std::vector<float> pressures() const;
   /// Bytes held per particle by all per-particle arrays and the grid.
   double bytes_per_particle() const;
+  /// The device step's phase profile (backend/device/phase_profile.hpp), on the device
+  /// backends only (the CPU step is profiled with perf: docs/PERFORMANCE.md): on restarts its
+  /// sums, off stops timing.
+  void set_device_profiling(bool on);
+  /// Seconds per phase of the device step since profiling was switched on; none on the CPU.
+  std::optional<DevicePhaseTimes> device_phase_times() const;
 
   /// Adds the state a restart needs to `c` (solver/simulation_checkpoint.cpp).
   void save_state(CheckpointData& c) const;

@@ -80,6 +80,19 @@ void Simulation::device_step() {
   }
 }
 
+void Simulation::set_device_profiling(bool on) {
+  if (!device_)
+    throw Error("--profile",
+                "the phase profile is of the device step (--backend cuda or "
+                "host-device); profile the CPU step with perf");
+  device_->set_profiling(on);
+}
+
+std::optional<DevicePhaseTimes> Simulation::device_phase_times() const {
+  if (!device_) return std::nullopt;
+  return device_->phase_times();
+}
+
 void Simulation::sync_from_device() const {
   if (!device_ || !device_ahead_) return;
   device_ahead_ = false;

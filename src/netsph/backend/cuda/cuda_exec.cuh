@@ -131,6 +131,11 @@ struct CudaExec {
     return static_cast<std::size_t>(last_in) + last_out;
   }
 
+  /// Waits for the device (the phase profile's clock). It does not throw: it runs in
+  /// destructors, and an error of the device is sticky, so the step's next checked call
+  /// reports it.
+  static void synchronize() { static_cast<void>(cudaDeviceSynchronize()); }
+
   __device__ static void atomic_add(double* p, double v) { atomicAdd(p, v); }
 
   static std::size_t count_below(const std::uint32_t* keys, std::size_t n, std::uint32_t bound) {

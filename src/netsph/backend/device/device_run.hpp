@@ -20,6 +20,9 @@ class DeviceRun {
   virtual double bytes_per_particle() const = 0;
   virtual void download_cell_begin(std::vector<std::uint32_t>& begin) const = 0;
   virtual void set_clock(double time, std::int64_t steps, double dt_floor) = 0;
+  /// The phase profile (phase_profile.hpp): on restarts its sums.
+  virtual void set_profiling(bool on) = 0;
+  virtual DevicePhaseTimes phase_times() const = 0;
 };
 
 template <class Exec>
@@ -38,6 +41,8 @@ class DeviceRunOn final : public DeviceRun {
   void set_clock(double time, std::int64_t steps, double dt_floor) override {
     s_.set_clock(time, steps, dt_floor);
   }
+  void set_profiling(bool on) override { s_.set_profiling(on); }
+  DevicePhaseTimes phase_times() const override { return s_.phase_times(); }
 
  private:
   DeviceStepper<Exec> s_;

@@ -32,17 +32,19 @@
 // (CUB's double-buffer sort, which needs no O(n) temporary storage), max_of(const T*, n),
 // count_below(const uint32*, n, bound), exclusive_scan(const uint32* in, uint32* out, n) ->
 // total, upload(Buffer<T>&, const T*, n), download(T*, const Buffer<T>&, n), and
-// atomic_add(double*, double) callable inside f. f must be a NETSPH_LAMBDA: on CUDA it runs on
-// the device.
+// atomic_add(double*, double) callable inside f, and synchronize() (waits for the device; for
+// the phase profile). f must be a NETSPH_LAMBDA: on CUDA it runs on the device.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "netsph/backend/device/device_kernels.hpp"
+#include "netsph/backend/device/phase_profile.hpp"
 #include "netsph/backend/device/work_area.hpp"
 #include "netsph/neighbors/grid_index.hpp"
 #include "netsph/sph/time_step.hpp"
@@ -158,9 +160,12 @@ class DeviceStepper {
     view(false);
     rates(false);
     if (has_bodies_) contacts();
-    const TimeStepInputs in{max_fluid_acceleration(),
-                            static_cast<double>(Exec::max_of(step_arrays().rates.visc_dt, n_))};
-    rep.dt_limits = compute_time_step(s_.model, s_.cfl, in);
+    {
+      const PhaseTimer<Exec> timer(profile(), DevicePhase::TimeStep);
+      const TimeStepInputs in{max_fluid_acceleration(),
+                              static_cast<double>(Exec::max_of(step_arrays().rates.visc_dt, n_))};
+      rep.dt_limits = compute_time_step(s_.model, s_.cfl, in);
+    }
     double dt = rep.dt_limits.dt;
     if (s_.dt_max > 0) dt = dt < s_.dt_max ? dt : s_.dt_max;
     if (steps_ == 0) dt_floor_ = s_.dt_min > 0 ? s_.dt_min : 1e-4 * dt;
@@ -192,6 +197,14 @@ class DeviceStepper {
     ++steps_;
     return rep;
   }
+
+  /// Switches the phase profile on (its sums restart) or off.
+  void set_profiling(bool on) {
+    profiling_ = on;
+    times_ = DevicePhaseTimes{};
+  }
+  /// Seconds per phase since profiling was switched on.
+  const DevicePhaseTimes& phase_times() const { return times_; }
 
   /// Sets the clock (time, step count, dt floor) of a run continued from a checkpoint.
   void set_clock(double time, std::int64_t steps, double dt_floor) {
@@ -287,6 +300,9 @@ class DeviceStepper {
   /// before the view is built or after the rates and contacts have read it).
   Real* scalars() { return step_arrays().view.x; }
 
+  /// Where the phases add their times: null while profiling is off.
+  DevicePhaseTimes* profile() { return profiling_ ? &times_ : nullptr; }
+
   /// The work area during the sort.
   struct SortArrays {
     std::uint32_t *keys_alt, *order, *order_alt;
@@ -315,6 +331,7 @@ class DeviceStepper {
   /// particles outside the grid. Mid-step (after the predictor) the step start's velocities
   /// and densities move too.
   void sort(bool mid_step) {
+    std::optional<PhaseTimer<Exec>> timer(std::in_place, profile(), DevicePhase::SortKeys);
     const GridIndex g = s_.grid;
     const DeviceState st = state();
     WorkCarver carve(work_.data(), n_);
@@ -336,6 +353,7 @@ class DeviceStepper {
     }
     const std::uint32_t* sorted_order = in_alt ? sa.order_alt : sa.order;
     const std::size_t kept = Exec::count_below(keys_.data(), n_, g.sentinel());
+    timer.emplace(profile(), DevicePhase::Gather);
     gather(pos_, sorted_order, sa.scratch, kept), gather(vel_, sorted_order, sa.scratch, kept);
     gather(rho_, sorted_order, sa.scratch, kept), gather(kind_, sorted_order, sa.scratch, kept);
     gather(id_, sorted_order, sa.scratch, kept), gather(group_, sorted_order, sa.scratch, kept);
@@ -345,6 +363,7 @@ class DeviceStepper {
       gather(srho_, sorted_order, sa.scratch, kept);
     }
     n_ = kept;
+    timer.emplace(profile(), DevicePhase::CellTable);
     // cell_begin[c] = first sorted index with key >= c, for c in [0, cells + 1].
     std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* k = keys_.data();
@@ -370,6 +389,7 @@ class DeviceStepper {
   // Kernel types are dispatched by hand, not with with_kernel: CUDA's device lambdas cannot be
   // defined inside a generic lambda.
   void mdbc() {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::BoundaryState);
     if (s_.model.kernel_type == KernelType::Wendland) return mdbc_for<WendlandC2>();
     mdbc_for<CubicSpline>();
   }
@@ -389,6 +409,7 @@ class DeviceStepper {
   }
 
   void view(bool half_step) {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::View);
     const DeviceState st = state();
     const DeviceView v = step_arrays().view;
     const FluidModel m = s_.model;
@@ -418,6 +439,7 @@ class DeviceStepper {
   /// `from_start` (after the predictor, which leaves body particles where the step started).
   double place_bodies(bool from_start) {
     if (!has_bodies_) return 0;
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::Bodies);
     const DeviceState st = state();
     const DeviceBody* bodies = bodies_.data();
     const Vec3f* offsets = offsets_.data();
@@ -434,6 +456,7 @@ class DeviceStepper {
   /// Buffer transitions, then the inlets' new buffer particles appended in index order with
   /// consecutive ids (as update_open_boundary_particles appends them).
   void open_boundaries(DeviceStepReport& rep) {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::OpenBoundaries);
     const DeviceState st = state();
     const ZoneGeometry* geo = zone_geo_.data();
     const std::size_t nz = s_.zones.size();
@@ -465,6 +488,7 @@ class DeviceStepper {
   }
 
   void buffer_state() {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::BoundaryState);
     if (s_.model.kernel_type == KernelType::Wendland) return buffer_state_for<WendlandC2>();
     buffer_state_for<CubicSpline>();
   }
@@ -488,6 +512,7 @@ class DeviceStepper {
   /// they arise: each body particle's contact acceleration goes straight into its body's sums,
   /// so no per-particle array holds it. The stage's fluid loads follow in advance_bodies.
   void contacts() {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::Bodies);
     double* loads = reinterpret_cast<double*>(loads_.data());
     Exec::for_each(s_.bodies.size() * 12, [=] NETSPH_LAMBDA(std::uint32_t k) { loads[k] = 0; });
     const GridIndex g = s_.grid;
@@ -513,6 +538,7 @@ class DeviceStepper {
   /// Adds the bodies' fluid loads (0-5) to the contact loads of this stage, advances the
   /// bodies on the host and copies their states back.
   void advance_bodies(bool corrector, double dt) {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::Bodies);
     const std::size_t nb = s_.bodies.size();
     double* loads = reinterpret_cast<double*>(loads_.data());
     const DeviceState st = state();
@@ -535,6 +561,7 @@ class DeviceStepper {
   }
 
   void rates(bool shift) {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::Rates);
     if (s_.model.kernel_type == KernelType::Wendland) return rates_kernel<WendlandC2>(shift);
     rates_kernel<CubicSpline>(shift);
   }
@@ -577,6 +604,7 @@ class DeviceStepper {
   }
 
   void save_start() {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::TimeStep);
     const DeviceState st = state();
     const DeviceStart ss = start();
     Exec::for_each(
@@ -596,6 +624,7 @@ class DeviceStepper {
 
   /// Predictor; returns the largest displacement, m.
   double predict(double dt) {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::Integration);
     const DeviceState st = state();
     const DeviceRates r = step_arrays().rates;
     const WallKinematics* motion = motion_.data();
@@ -608,6 +637,7 @@ class DeviceStepper {
   }
 
   double max_fluid_speed() {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::TimeStep);
     const DeviceState st = state();
     Real* speed2 = scalars();
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
@@ -619,6 +649,7 @@ class DeviceStepper {
 
   /// Corrector; returns false when a particle's state is not finite.
   bool correct(double dt) {
+    const PhaseTimer<Exec> timer(profile(), DevicePhase::Integration);
     const DeviceState st = state();
     const DeviceStart ss = start();
     const DeviceRates r = step_arrays().rates;
@@ -642,6 +673,8 @@ class DeviceStepper {
   double time_ = 0;
   std::int64_t steps_ = 0;
   double dt_floor_ = 0;
+  bool profiling_ = false;
+  DevicePhaseTimes times_;
   Buffer<Vec3d> pos_;
   Buffer<Vec3f> vel_, ghost_, svel_;
   Buffer<Real> rho_, srho_;

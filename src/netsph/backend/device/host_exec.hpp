@@ -49,6 +49,9 @@ struct HostExec {
     return m;
   }
 
+  /// Every call has finished when it returns.
+  static void synchronize() {}
+
   static void atomic_add(double* p, double v) {
 #pragma omp atomic
     *p += v;
