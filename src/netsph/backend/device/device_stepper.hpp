@@ -279,12 +279,11 @@ class DeviceStepper {
   StepArrays step_layout(WorkCarver& c) {
     StepArrays a{};
     DeviceView& v = a.view;
-    v.x = c.take<Real>(), v.y = c.take<Real>(), v.z = c.take<Real>();
+    v.pp = c.take<PosPress>();
     v.vx = c.take<Real>(), v.vy = c.take<Real>(), v.vz = c.take<Real>();
     v.cvx = v.vx, v.cvy = v.vy, v.cvz = v.vz;
     if (mirrors_) v.cvx = c.take<Real>(), v.cvy = c.take<Real>(), v.cvz = c.take<Real>();
     v.rho = rho_.data();
-    v.press = c.take<Real>();
     DeviceRates& r = a.rates;
     r.acc = c.take<Vec3f>(), r.drho = c.take<Real>(), r.visc_dt = c.take<Real>();
     r.grad_c = s_.shifting ? c.take<Vec3f>() : nullptr;
@@ -296,9 +295,9 @@ class DeviceStepper {
     return step_layout(carve);
   }
   /// One float per particle for the reductions of a step (displacements, the dt force
-  /// criterion, non-finite flags): the view's x, which those phases never overlap (they run
-  /// before the view is built or after the rates and contacts have read it).
-  Real* scalars() { return step_arrays().view.x; }
+  /// criterion, non-finite flags): the start of the view's positions, which those phases never
+  /// overlap (they run before the view is built or after the rates and contacts have read it).
+  Real* scalars() { return reinterpret_cast<Real*>(step_arrays().view.pp); }
 
   /// Where the phases add their times: null while profiling is off.
   DevicePhaseTimes* profile() { return profiling_ ? &times_ : nullptr; }
