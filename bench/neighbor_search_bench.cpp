@@ -1,6 +1,7 @@
 // Micro-benchmarks of the neighbour search (neighbors/cell_grid.hpp): the counting sort by
 // cell, and the walk over the candidate ranges of every occupied cell that the interaction
-// loop makes (counting the pairs within the support instead of computing their rates).
+// loop makes (the fluid pass's candidate scan, which compacts the pairs within the support
+// into batches, without computing their rates).
 //
 // The particles are a lattice water column of a 3D dam break (aspect 0.4 x 0.67 x 0.3, dp =
 // 0.3 m / nz) in a tank four times as long and 4/3 as high, so most cells of the grid are
@@ -14,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "netsph/backend/cpu/neighbour_batch.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
 #include "netsph/sph/particle_set.hpp"
 
@@ -106,19 +108,24 @@ void BM_NeighbourSearch(benchmark::State& state) {
       NeighbourRanges ranges;
       const int nranges = grid.neighbour_ranges(c, ranges);
       for (std::uint32_t a = own.begin; a < own.end; ++a) {
-        const float xa = x[a], ya = y[a], za = z[a];
-        int found = 0;
+        // The fluid pass's scan (backend/cpu/neighbour_batch.hpp): test and compact.
+        NeighbourBatch batch;
+        std::int64_t found = 0;
+        const auto sum = [&](const NeighbourBatch&) { found += NeighbourBatch::kCapacity; };
         for (int r = 0; r < nranges; ++r) {
-          const std::uint32_t b0 = ranges[static_cast<std::size_t>(r)].begin;
-          const std::uint32_t b1 = ranges[static_cast<std::size_t>(r)].end;
-          candidates += b1 - b0;
-#pragma omp simd reduction(+ : found)
-          for (std::uint32_t b = b0; b < b1; ++b) {
-            const float dx = xa - x[b], dy = ya - y[b], dz = za - z[b];
-            found += (dx * dx + dy * dy + dz * dz < support2 && b != a) ? 1 : 0;
-          }
+          const NeighbourRange& range = ranges[static_cast<std::size_t>(r)];
+          candidates += range.end - range.begin;
+          const CandidateScan scan{x[a] - range.shift.x,
+                                   y[a] - range.shift.y,
+                                   z[a] - range.shift.z,
+                                   x,
+                                   y,
+                                   z,
+                                   a,
+                                   support2};
+          scan_range(scan, range.begin, range.end, batch, sum);
         }
-        pairs += found;
+        pairs += found + batch.n;
       }
     }
     benchmark::DoNotOptimize(pairs);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "netsph/backend/cpu/neighbour_batch.hpp"
 #include "netsph/sph/pair_interaction.hpp"
 
 namespace netsph {
@@ -15,25 +16,11 @@ struct FluidResult {
   Real div_r = 0;
 };
 
-/// The neighbours of one particle within the support, compacted: their offsets r_a - r_b and
-/// indices. The candidate scan (about 4 candidates per neighbour, in 25 short rows of cells)
-/// fills it; the pair loop then runs over neighbours only, in full vector lanes, with one
-/// reduction per batch instead of one per row.
-struct NeighbourBatch {
-  static constexpr int kCapacity = 128;
-  alignas(64) Real dx[kCapacity];
-  alignas(64) Real dy[kCapacity];
-  alignas(64) Real dz[kCapacity];
-  alignas(64) Real r2[kCapacity];
-  alignas(64) std::int32_t j[kCapacity];
-  int n = 0;
-};
-
-/// The pair sums of fluid particle a over one batch of its neighbours (omp simd: the body is
-/// branch-free and reads the neighbours' fields by gather).
+/// The pair sums of fluid particle a over the first n neighbours of a batch (omp simd: the
+/// body is branch-free and reads the neighbours' fields by gather).
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 inline FluidResult fluid_batch_sums(const FluidModel& model, const InteractionView& v,
-                                    std::uint32_t a, const NeighbourBatch& batch) {
+                                    std::uint32_t a, const NeighbourBatch& batch, int n) {
   // A local copy: the loop then reads the constants from registers; loads through the
   // reference stay in the loop as masked loads that GCC 12 cannot vectorise.
   const FluidModel m = model;
@@ -54,7 +41,6 @@ inline FluidResult fluid_batch_sums(const FluidModel& model, const InteractionVi
   const Real* __restrict bdz = batch.dz;
   const Real* __restrict br2 = batch.r2;
   const std::int32_t* __restrict bj = batch.j;
-  const int n = batch.n;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
   Real gx = 0, gy = 0, gz = 0, div = 0;
 #pragma omp simd reduction(+ : ax, ay, az, dr, gx, gy, gz, div) reduction(max : vdt)
@@ -96,38 +82,31 @@ inline void accumulate(FluidResult& sum, const FluidResult& part) {
   sum.div_r += part.div_r;
 }
 
-/// Sums over the neighbours of fluid particle a: the candidate scan compacts the neighbours
-/// into batches, and fluid_batch_sums sums each batch.
+/// Sums over the neighbours of fluid particle a: the candidate scan (neighbour_batch.hpp)
+/// compacts the neighbours into batches, and fluid_batch_sums sums each batch.
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
                               const NeighbourRanges& ranges, int nranges) {
-  const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
-  const Real* __restrict x = v.x.data();
-  const Real* __restrict y = v.y.data();
-  const Real* __restrict z = v.z.data();
-  const Real support2 = m.support2;
   NeighbourBatch batch;
   FluidResult out;
+  const auto sum_full = [&](const NeighbourBatch& b) {
+    accumulate(out,
+               fluid_batch_sums<Kernel, Visc, Diff, Shift>(m, v, a, b, NeighbourBatch::kCapacity));
+  };
   for (int k = 0; k < nranges; ++k) {
-    const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
     // The neighbour's position is x[b] + shift: shifting a instead keeps the loop body plain.
-    const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
-               zs = za - ranges[k].shift.z;
-    for (std::uint32_t b = b0; b < b1; ++b) {
-      const Real dx = xs - x[b], dy = ys - y[b], dz = zs - z[b];
-      const Real r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 < support2 && b != a) {
-        if (batch.n == NeighbourBatch::kCapacity) {
-          accumulate(out, fluid_batch_sums<Kernel, Visc, Diff, Shift>(m, v, a, batch));
-          batch.n = 0;
-        }
-        const int q = batch.n++;
-        batch.dx[q] = dx, batch.dy[q] = dy, batch.dz[q] = dz, batch.r2[q] = r2;
-        batch.j[q] = static_cast<std::int32_t>(b);
-      }
-    }
+    const CandidateScan scan{v.x[a] - ranges[k].shift.x,
+                             v.y[a] - ranges[k].shift.y,
+                             v.z[a] - ranges[k].shift.z,
+                             v.x.data(),
+                             v.y.data(),
+                             v.z.data(),
+                             a,
+                             m.support2};
+    scan_range(scan, ranges[k].begin, ranges[k].end, batch, sum_full);
   }
-  if (batch.n > 0) accumulate(out, fluid_batch_sums<Kernel, Visc, Diff, Shift>(m, v, a, batch));
+  if (batch.n > 0)
+    accumulate(out, fluid_batch_sums<Kernel, Visc, Diff, Shift>(m, v, a, batch, batch.n));
   return out;
 }
 

@@ -1,0 +1,133 @@
+#pragma once
+// The candidate scan of the CPU fluid pass (rates.cpp): the neighbours of particle a within
+// the support among one range of sorted candidates, appended in index order to a batch of
+// offsets, squared distances and indices. The pair loop then runs over the batch in full vector
+// lanes (docs/PERFORMANCE.md, "Where the time goes").
+//
+// With AVX-512 the scan tests 16 candidates at a time and compacts the hits with vcompressps
+// into registers, stored whole (the batch has 16 entries of slack for the lanes past the hits);
+// without it, one candidate at a time with a branch. Both give the same neighbours in the same
+// order with the same float arithmetic, so the rates do not depend on which one ran
+// (tests/unit/neighbour_batch_test.cpp).
+#include <cstdint>
+#include <cstring>
+
+#include "netsph/core/real.hpp"
+
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
+
+namespace netsph {
+
+struct NeighbourBatch {
+  static constexpr int kCapacity = 128;  ///< neighbours summed at a time
+  static constexpr int kSlack = 16;      ///< room for a whole vector store past the last hit
+  alignas(64) Real dx[kCapacity + kSlack];
+  alignas(64) Real dy[kCapacity + kSlack];
+  alignas(64) Real dz[kCapacity + kSlack];
+  alignas(64) Real r2[kCapacity + kSlack];
+  alignas(64) std::int32_t j[kCapacity + kSlack];
+  int n = 0;
+
+  /// After sum(batch) has taken the first kCapacity entries: moves the rest to the front.
+  void drop_full_batch() {
+    const int rest = n - kCapacity;
+    const auto bytes = static_cast<std::size_t>(rest) * sizeof(Real);
+    std::memmove(dx, dx + kCapacity, bytes), std::memmove(dy, dy + kCapacity, bytes);
+    std::memmove(dz, dz + kCapacity, bytes), std::memmove(r2, r2 + kCapacity, bytes);
+    std::memmove(j, j + kCapacity, static_cast<std::size_t>(rest) * sizeof(std::int32_t));
+    n = rest;
+  }
+};
+
+/// Where a candidate range is scanned: particle a's position less the range's periodic shift
+/// (so the loop reads the candidates' positions as they are), and the view's positions.
+struct CandidateScan {
+  Real xs, ys, zs;
+  const Real* x;
+  const Real* y;
+  const Real* z;
+  std::uint32_t a;  ///< the particle itself, never its own neighbour
+  Real support2;
+};
+
+/// r^2 of an offset, contracted as GCC 12 contracts the expression dx*dx + dy*dy + dz*dz with
+/// FMA (-ffp-contract=fast: fma(dz, dz, fma(dx, dx, dy*dy))), written out so that the scalar and
+/// vector scans round alike, and as the scan did before it was vectorised.
+inline Real offset_r2(Real dx, Real dy, Real dz) {
+#if defined(__FMA__)
+  return __builtin_fmaf(dz, dz, __builtin_fmaf(dx, dx, dy * dy));
+#else
+  return dx * dx + dy * dy + dz * dz;
+#endif
+}
+
+/// Appends the neighbours among candidates [b0, b1) one at a time; whenever the batch holds
+/// kCapacity entries calls sum(batch), which sums those first kCapacity, and drops them.
+template <class Sum>
+inline void scan_range_scalar(const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
+                              NeighbourBatch& batch, Sum&& sum) {
+  for (std::uint32_t b = b0; b < b1; ++b) {
+    const Real dx = s.xs - s.x[b], dy = s.ys - s.y[b], dz = s.zs - s.z[b];
+    const Real r2 = offset_r2(dx, dy, dz);
+    if (r2 < s.support2 && b != s.a) {
+      const int q = batch.n++;
+      batch.dx[q] = dx, batch.dy[q] = dy, batch.dz[q] = dz, batch.r2[q] = r2;
+      batch.j[q] = static_cast<std::int32_t>(b);
+      if (batch.n == NeighbourBatch::kCapacity) {
+        sum(batch);
+        batch.drop_full_batch();
+      }
+    }
+  }
+}
+
+#if defined(__AVX512F__)
+/// The same, 16 candidates at a time.
+template <class Sum>
+inline void scan_range_avx512(const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
+                              NeighbourBatch& batch, Sum&& sum) {
+  const __m512 xs = _mm512_set1_ps(s.xs), ys = _mm512_set1_ps(s.ys), zs = _mm512_set1_ps(s.zs);
+  const __m512 support2 = _mm512_set1_ps(s.support2);
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  for (std::uint32_t b = b0; b < b1; b += 16) {
+    const std::uint32_t left = b1 - b;
+    // Lanes past the range are masked: their loads do not touch memory.
+    const __mmask16 live =
+        left >= 16 ? static_cast<__mmask16>(0xFFFF) : static_cast<__mmask16>((1u << left) - 1);
+    const __m512 dx = _mm512_sub_ps(xs, _mm512_maskz_loadu_ps(live, s.x + b));
+    const __m512 dy = _mm512_sub_ps(ys, _mm512_maskz_loadu_ps(live, s.y + b));
+    const __m512 dz = _mm512_sub_ps(zs, _mm512_maskz_loadu_ps(live, s.z + b));
+    const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dx, dx, _mm512_mul_ps(dy, dy)));
+    __mmask16 hit = _mm512_mask_cmp_ps_mask(live, r2, support2, _CMP_LT_OQ);
+    if (s.a - b < 16) hit &= static_cast<__mmask16>(~(1u << (s.a - b)));
+    if (hit == 0) continue;
+    const int q = batch.n;
+    _mm512_storeu_ps(batch.dx + q, _mm512_maskz_compress_ps(hit, dx));
+    _mm512_storeu_ps(batch.dy + q, _mm512_maskz_compress_ps(hit, dy));
+    _mm512_storeu_ps(batch.dz + q, _mm512_maskz_compress_ps(hit, dz));
+    _mm512_storeu_ps(batch.r2 + q, _mm512_maskz_compress_ps(hit, r2));
+    const __m512i idx = _mm512_add_epi32(_mm512_set1_epi32(static_cast<int>(b)), lane);
+    _mm512_storeu_si512(batch.j + q, _mm512_maskz_compress_epi32(hit, idx));
+    batch.n = q + __builtin_popcount(hit);
+    if (batch.n >= NeighbourBatch::kCapacity) {
+      sum(batch);
+      batch.drop_full_batch();
+    }
+  }
+}
+#endif
+
+/// The scan this build runs.
+template <class Sum>
+inline void scan_range(const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
+                       NeighbourBatch& batch, Sum&& sum) {
+#if defined(__AVX512F__)
+  scan_range_avx512(s, b0, b1, batch, sum);
+#else
+  scan_range_scalar(s, b0, b1, batch, sum);
+#endif
+}
+
+}  // namespace netsph
