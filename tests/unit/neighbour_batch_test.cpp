@@ -106,6 +106,19 @@ TEST(NeighbourBatch, EveryCandidateANeighbourFillsBatchesAtTheCapacityExactly) {
   EXPECT_EQ(d.full[1].front().j, 129);  // 0..15, 17..128 in the first batch (128 entries)
 }
 
+TEST(NeighbourBatch, ARequiredFlagLeavesOutTheCandidatesWithoutIt) {
+  // Walls and bodies take fluid neighbours only: every other candidate flagged 0.
+  const Cloud c = cloud(400, 0.1f, 3);
+  std::vector<Real> fluid(400);
+  for (std::size_t b = 0; b < fluid.size(); ++b) fluid[b] = b % 2 ? Real(1) : Real(0);
+  const CandidateScan s{0, 0, 0, c.x.data(), c.y.data(), c.z.data(), 1000, 1.0f, fluid.data()};
+  const Delivered d = run(s, {0, 7, 200, 400}, scalar);
+  ASSERT_EQ(d.full.size(), 1u);
+  ASSERT_EQ(d.rest.size(), 72u);
+  for (const Entry& e : d.full[0]) EXPECT_EQ(e.j % 2, 1);
+  for (const Entry& e : d.rest) EXPECT_EQ(e.j % 2, 1);
+}
+
 #if defined(__AVX512F__)
 TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
   const auto vector = [](const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
@@ -120,14 +133,18 @@ TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
       cuts.push_back(std::min<std::uint32_t>(700, cuts.back() + len));
     }
     const std::uint32_t self = seed * 31 % 700;
-    const CandidateScan s{c.x[self] + 0.01f,
-                          c.y[self],
-                          c.z[self] - 0.02f,
-                          c.x.data(),
-                          c.y.data(),
-                          c.z.data(),
-                          self,
-                          1.0f};
+    CandidateScan s{c.x[self] + 0.01f,
+                    c.y[self],
+                    c.z[self] - 0.02f,
+                    c.x.data(),
+                    c.y.data(),
+                    c.z.data(),
+                    self,
+                    1.0f};
+    // Every third seed scans for flagged neighbours only, as walls and bodies do.
+    std::vector<Real> flag(700);
+    for (std::size_t k = 0; k < flag.size(); ++k) flag[k] = (k * 7 + seed) % 3 ? Real(1) : Real(0);
+    if (seed % 3 == 0) s.require = flag.data();
     const Delivered a = run(s, cuts, scalar);
     const Delivered b = run(s, cuts, vector);
     ASSERT_EQ(a.full.size(), b.full.size()) << "seed " << seed;

@@ -50,6 +50,9 @@ struct CandidateScan {
   const Real* z;
   std::uint32_t a;  ///< the particle itself, never its own neighbour
   Real support2;
+  /// When set, only candidates b with require[b] > 0 are neighbours (walls and bodies take
+  /// fluid neighbours only: the view's fluid flag).
+  const Real* require = nullptr;
 };
 
 /// r^2 of an offset, contracted as GCC 12 contracts the expression dx*dx + dy*dy + dz*dz with
@@ -71,7 +74,7 @@ inline void scan_range_scalar(const CandidateScan& s, std::uint32_t b0, std::uin
   for (std::uint32_t b = b0; b < b1; ++b) {
     const Real dx = s.xs - s.x[b], dy = s.ys - s.y[b], dz = s.zs - s.z[b];
     const Real r2 = offset_r2(dx, dy, dz);
-    if (r2 < s.support2 && b != s.a) {
+    if (r2 < s.support2 && b != s.a && (!s.require || s.require[b] > Real(0))) {
       const int q = batch.n++;
       batch.dx[q] = dx, batch.dy[q] = dy, batch.dz[q] = dz, batch.r2[q] = r2;
       batch.j[q] = static_cast<std::int32_t>(b);
@@ -102,6 +105,10 @@ inline void scan_range_avx512(const CandidateScan& s, std::uint32_t b0, std::uin
     const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dx, dx, _mm512_mul_ps(dy, dy)));
     __mmask16 hit = _mm512_mask_cmp_ps_mask(live, r2, support2, _CMP_LT_OQ);
     if (s.a - b < 16) hit &= static_cast<__mmask16>(~(1u << (s.a - b)));
+    if (s.require && hit != 0) {
+      const __m512 flag = _mm512_maskz_loadu_ps(hit, s.require + b);
+      hit = _mm512_mask_cmp_ps_mask(hit, flag, _mm512_setzero_ps(), _CMP_GT_OQ);
+    }
     if (hit == 0) continue;
     const int q = batch.n;
     _mm512_storeu_ps(batch.dx + q, _mm512_maskz_compress_ps(hit, dx));
@@ -128,6 +135,23 @@ inline void scan_range(const CandidateScan& s, std::uint32_t b0, std::uint32_t b
 #else
   scan_range_scalar(s, b0, b1, batch, sum);
 #endif
+}
+
+/// Runs the scan over every candidate range of a particle and hands the neighbours to
+/// sum(batch, n) in batches: the first n entries, n = kCapacity while more may follow, then the
+/// rest. `scan` holds the particle's own position: each range's periodic shift is taken off.
+template <class Ranges, class Sum>
+inline void scan_ranges(CandidateScan scan, const Ranges& ranges, int nranges, Sum&& sum) {
+  NeighbourBatch batch;
+  const Real xa = scan.xs, ya = scan.ys, za = scan.zs;
+  const auto full = [&](const NeighbourBatch& b) { sum(b, NeighbourBatch::kCapacity); };
+  for (int k = 0; k < nranges; ++k) {
+    // The neighbour's position is x[b] + shift: shifting a instead keeps the loop body plain.
+    scan.xs = xa - ranges[k].shift.x, scan.ys = ya - ranges[k].shift.y;
+    scan.zs = za - ranges[k].shift.z;
+    scan_range(scan, ranges[k].begin, ranges[k].end, batch, full);
+  }
+  if (batch.n > 0) sum(batch, batch.n);
 }
 
 }  // namespace netsph

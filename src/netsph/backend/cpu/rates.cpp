@@ -110,95 +110,114 @@ inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std
   return out;
 }
 
+/// The continuity sums of wall particle a (DBC, Crespo et al. 2007) over the first n fluid
+/// neighbours of a batch.
 template <class Kernel>
-inline RateSums wall_sums(const FluidModel& model, const InteractionView& v, std::uint32_t a,
-                          const NeighbourRanges& ranges, int nranges) {
+inline RateSums wall_batch_sums(const FluidModel& model, const InteractionView& v, std::uint32_t a,
+                                const NeighbourBatch& batch, int n) {
   // A local copy: the loop then reads the constants from registers; loads through the
   // reference stay in the loop as masked loads that GCC 12 cannot vectorise.
   const FluidModel m = model;
-  const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
   // the solid's own velocity
   const Real cxa = v.continuity_vx()[a], cya = v.continuity_vy()[a], cza = v.continuity_vz()[a];
+  const Real* __restrict vx = v.vx.data();
+  const Real* __restrict vy = v.vy.data();
+  const Real* __restrict vz = v.vz.data();
+  const Real* __restrict rho = v.rho.data();
+  const Real* __restrict press = v.press.data();
+  const std::int32_t* __restrict bj = batch.j;
   Real dr = 0, vdt = 0;
-  for (int k = 0; k < nranges; ++k) {
-    const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
-    const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
-               zs = za - ranges[k].shift.z;
 #pragma omp simd reduction(+ : dr) reduction(max : vdt)
-    for (std::int64_t b = b0; b < std::int64_t(b1); ++b) {  // signed: a contiguous load, no gather
-      const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
-      const Real r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 < m.support2 && v.fluid[b] > Real(0)) {
-        const Neighbour nb{{dx, dy, dz},
-                           r2,
-                           {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                           {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
-                           v.rho[b],
-                           v.press[b],
-                           m.mass,
-                           v.fluid[b]};
-        const PairRates s = boundary_pair_rates<Kernel>(m, nb);
-        dr += s.drho;
-        vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
-      }
-    }
+  for (int k = 0; k < n; ++k) {
+    const std::int32_t b = bj[k];
+    const Neighbour nb{{batch.dx[k], batch.dy[k], batch.dz[k]},
+                       batch.r2[k],
+                       {vxa - vx[b], vya - vy[b], vza - vz[b]},
+                       {cxa - vx[b], cya - vy[b], cza - vz[b]},
+                       rho[b],
+                       press[b],
+                       m.mass,
+                       Real(1)};
+    const PairRates s = boundary_pair_rates<Kernel>(m, nb);
+    dr += s.drho;
+    vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
   }
+  return {{}, dr, vdt};
+}
+
+/// Wall particle a: the scan keeps its fluid (and buffer) neighbours only.
+template <class Kernel>
+inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
+                          const NeighbourRanges& ranges, int nranges) {
   RateSums out;
-  out.drho = dr;
-  out.visc_dt = vdt;
+  const CandidateScan scan{v.x[a],     v.y[a], v.z[a],     v.x.data(),    v.y.data(),
+                           v.z.data(), a,      m.support2, v.fluid.data()};
+  scan_ranges(scan, ranges, nranges, [&](const NeighbourBatch& b, int n) {
+    const RateSums s = wall_batch_sums<Kernel>(m, v, a, b, n);
+    out.drho += s.drho;
+    out.visc_dt = std::max(out.visc_dt, s.visc_dt);
+  });
   return out;
 }
 
 /// Body particle a: pressure and viscous force from fluid and buffer neighbours only (the
-/// body's share of the pairwise forces), and continuity from them. Walls and other bodies act
-/// through contact (backend/cpu/contact).
+/// body's share of the pairwise forces), and continuity from them, over the first n of a
+/// batch. Walls and other bodies act through contact (backend/cpu/contact).
 /// The body sees gauge pressures (the EOS background removed): a uniform pressure has no net
 /// force on a closed body, but the SPH sum only cancels it where the fluid covers the body
 /// evenly, and a wake never does, so the background would add a spurious drag (+2.5% of Cd
 /// per 100 Pa in the DFG case at D/dp = 10; docs/VALIDATION.md). The fluid keeps the full
 /// pressures (its repulsion from the body); the two differ by that spurious force only.
 template <class Kernel, ViscosityModel Visc>
-inline RateSums body_sums(const FluidModel& model, const InteractionView& v, std::uint32_t a,
-                          const NeighbourRanges& ranges, int nranges) {
+inline RateSums body_batch_sums(const FluidModel& model, const InteractionView& v, std::uint32_t a,
+                                const NeighbourBatch& batch, int n) {
   // A local copy: the loop then reads the constants from registers; loads through the
   // reference stay in the loop as masked loads that GCC 12 cannot vectorise.
   const FluidModel m = model;
-  const Real xa = v.x[a], ya = v.y[a], za = v.z[a];
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
   // the solid's own velocity
   const Real cxa = v.continuity_vx()[a], cya = v.continuity_vy()[a], cza = v.continuity_vz()[a];
   const Real p_bg = m.eos.p_background;
   const Real rho_a = v.rho[a], press_a = v.press[a] - p_bg;
+  const Real* __restrict vx = v.vx.data();
+  const Real* __restrict vy = v.vy.data();
+  const Real* __restrict vz = v.vz.data();
+  const Real* __restrict rho = v.rho.data();
+  const Real* __restrict press = v.press.data();
+  const std::int32_t* __restrict bj = batch.j;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
-  for (int k = 0; k < nranges; ++k) {
-    const std::uint32_t b0 = ranges[k].begin, b1 = ranges[k].end;
-    const Real xs = xa - ranges[k].shift.x, ys = ya - ranges[k].shift.y,
-               zs = za - ranges[k].shift.z;
 #pragma omp simd reduction(+ : ax, ay, az, dr) reduction(max : vdt)
-    for (std::int64_t b = b0; b < std::int64_t(b1); ++b) {  // signed: a contiguous load, no gather
-      const Real dx = xs - v.x[b], dy = ys - v.y[b], dz = zs - v.z[b];
-      const Real r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 < m.support2 && v.fluid[b] > Real(0)) {
-        const Neighbour nb{{dx, dy, dz},
-                           r2,
-                           {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                           {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
-                           v.rho[b],
-                           v.press[b] - p_bg,
-                           m.mass,
-                           v.fluid[b]};
-        const PairRates s =
-            fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a, nb);
-        ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
-        vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
-      }
-    }
+  for (int k = 0; k < n; ++k) {
+    const std::int32_t b = bj[k];
+    const Neighbour nb{{batch.dx[k], batch.dy[k], batch.dz[k]},
+                       batch.r2[k],
+                       {vxa - vx[b], vya - vy[b], vza - vz[b]},
+                       {cxa - vx[b], cya - vy[b], cza - vz[b]},
+                       rho[b],
+                       press[b] - p_bg,
+                       m.mass,
+                       Real(1)};
+    const PairRates s =
+        fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a, nb);
+    ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
+    vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
   }
+  return {{ax, ay, az}, dr, vdt};
+}
+
+template <class Kernel, ViscosityModel Visc>
+inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
+                          const NeighbourRanges& ranges, int nranges) {
   RateSums out;
-  out.acc = {ax, ay, az};
-  out.drho = dr;
-  out.visc_dt = vdt;
+  const CandidateScan scan{v.x[a],     v.y[a], v.z[a],     v.x.data(),    v.y.data(),
+                           v.z.data(), a,      m.support2, v.fluid.data()};
+  scan_ranges(scan, ranges, nranges, [&](const NeighbourBatch& b, int n) {
+    const RateSums s = body_batch_sums<Kernel, Visc>(m, v, a, b, n);
+    out.acc += s.acc;
+    out.drho += s.drho;
+    out.visc_dt = std::max(out.visc_dt, s.visc_dt);
+  });
   return out;
 }
 
