@@ -1,8 +1,9 @@
 #pragma once
-// The candidate scan of the CPU fluid pass (rates.cpp): the neighbours of particle a within
-// the support among one range of sorted candidates, appended in index order to a batch of
-// offsets, squared distances and indices. The pair loop then runs over the batch in full vector
-// lanes (docs/PERFORMANCE.md, "Where the time goes").
+// The candidate scan of the CPU interaction passes (rates.cpp): the neighbours of particle a
+// within the support among one range of sorted candidates (for wall and body particles, the
+// fluid ones only), appended in index order to a batch of offsets, squared distances and
+// indices. The pair loop then runs over the batch in full vector lanes (docs/PERFORMANCE.md,
+// "Where the time goes").
 //
 // With AVX-512 the scan tests 16 candidates at a time and compacts the hits with vcompressps
 // into registers, stored whole (the batch has 16 entries of slack for the lanes past the hits);
