@@ -35,13 +35,18 @@ struct BenchRow {
   double profiled_wall_s = 0;
 };
 
+/// Wall seconds of `steps` more steps of `sim`. On the device each step ends with reductions
+/// copied back to the host, so the clock sees finished work.
+double timed_steps(Simulation& sim, int steps) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int s = 0; s < steps; ++s) sim.step();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 /// Times `steps` more steps of `sim` with the device step's phase profile on.
 void profile_phases(Simulation& sim, int steps, BenchRow& row) {
   sim.set_device_profiling(true);
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int s = 0; s < steps; ++s) sim.step();
-  row.profiled_wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  row.profiled_wall_s = timed_steps(sim, steps);
   row.phases = sim.device_phase_times();
   sim.set_device_profiling(false);
 }
@@ -85,11 +90,7 @@ int bench_command(const BenchArgs& args) {
     row.dp = kReferenceDp * std::cbrt(n_ref / target);
     Simulation sim(bench_case(row.dp), step_backend(backend));
     sim.step();  // warm-up: sizes every array, first sort
-    const auto t0 = std::chrono::steady_clock::now();
-    // On the device each step ends with reductions copied back to the host, so the clock sees
-    // finished work.
-    for (int s = 0; s < args.steps; ++s) sim.step();
-    row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    row.wall_s = timed_steps(sim, args.steps);
     row.particles = sim.particle_count();
     row.bytes = sim.bytes_per_particle();
     row.steps = args.steps;
