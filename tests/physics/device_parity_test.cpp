@@ -18,6 +18,7 @@
 #include "case_runs.hpp"
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/solver/runner.hpp"
+#include "state_difference.hpp"
 
 #include <nlohmann/json.hpp>
 #if defined(NETSPH_HAVE_CUDA)
@@ -27,78 +28,25 @@
 namespace netsph {
 namespace {
 
-struct Difference {
-  double pos = 0;         ///< largest position difference, in dp
-  double vel = 0;         ///< largest velocity difference over the largest speed
-  double rho = 0;         ///< largest relative density difference
-  double dt = 0;          ///< largest relative dt difference over the steps
-  double body_pos = 0;    ///< largest body centre difference, in dp
-  double body_force = 0;  ///< largest body fluid-force difference over the largest force
-};
+using test::Difference;
+using test::expect_parity;
 
 Difference compare(const std::string& name, const std::vector<std::string>& overrides, int steps,
                    StepBackend backend) {
   const CaseSpec spec = test::load_case(name, overrides);
   Simulation cpu(spec);
   Simulation dev(spec, backend);
-  Difference d;
+  double dt = 0;
   for (int s = 0; s < steps; ++s) {
     cpu.step();
     dev.step();
-    d.dt = std::max(d.dt, std::fabs(dev.last_dt() / cpu.last_dt() - 1));
+    dt = std::max(dt, std::fabs(dev.last_dt() / cpu.last_dt() - 1));
   }
-  EXPECT_NEAR(dev.time(), cpu.time(), 1e-5 * cpu.time());
   EXPECT_EQ(dev.diagnostics().open.created, cpu.diagnostics().open.created);
   EXPECT_EQ(dev.diagnostics().open.removed, cpu.diagnostics().open.removed);
-  const ParticleSet& q = dev.particles();
-  const ParticleSet& p = cpu.particles();
-  EXPECT_EQ(q.size(), p.size());
-  std::unordered_map<std::uint32_t, std::size_t> where;
-  for (std::size_t i = 0; i < q.size(); ++i) where[q.id[i]] = i;
-  double vmax = 1e-3;
-  for (const Vec3f& v : p.vel) vmax = std::max(vmax, static_cast<double>(norm(v)));
-  EXPECT_NEAR(dev.diagnostics().max_speed, cpu.diagnostics().max_speed, 1e-3 * vmax);
-  const double dp = spec.simulation.dp;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const auto it = where.find(p.id[i]);
-    if (it == where.end()) {
-      ADD_FAILURE() << "particle id " << p.id[i] << " is missing from the device run";
-      continue;
-    }
-    const std::size_t j = it->second;
-    EXPECT_EQ(p.kind[i], q.kind[j]);
-    d.pos = std::max(d.pos, norm(p.pos[i] - q.pos[j]) / dp);
-    d.vel = std::max(d.vel, static_cast<double>(norm(p.vel[i] - q.vel[j])) / vmax);
-    d.rho = std::max(d.rho, std::fabs(static_cast<double>(p.rho[i] - q.rho[j])) / p.rho[i]);
-  }
-  const auto& bodies = cpu.bodies();
-  EXPECT_EQ(bodies.size(), dev.bodies().size());
-  // Fluid and contact forces (the device sums them in different kernels).
-  double fmax = 1e-12;
-  for (const RigidBody& b : bodies)
-    fmax = std::max({fmax, norm(b.fluid_force), norm(b.contact_force)});
-  for (std::size_t b = 0; b < bodies.size() && b < dev.bodies().size(); ++b) {
-    const RigidBody &c = bodies[b], &g = dev.bodies()[b];
-    d.body_pos = std::max(d.body_pos, norm(c.state.com - g.state.com) / dp);
-    d.body_force = std::max({d.body_force, norm(c.fluid_force - g.fluid_force) / fmax,
-                             norm(c.contact_force - g.contact_force) / fmax});
-  }
+  Difference d = test::state_difference(cpu, dev);
+  d.dt = dt;
   return d;
-}
-
-// Float round-off: about 1e-7 per operation, amplified over the steps by the flow; a logic
-// error (a missed neighbour, a wrong sign, a stale array) shows at 1e-3 or more.
-void expect_parity(const Difference& d) {
-  std::printf(
-      "largest differences: position %.3g dp, velocity %.3g of the top speed, density "
-      "%.3g, dt %.3g, body centre %.3g dp, body force %.3g of the largest\n",
-      d.pos, d.vel, d.rho, d.dt, d.body_pos, d.body_force);
-  EXPECT_LT(d.pos, 1e-4) << "largest position difference, dp";
-  EXPECT_LT(d.vel, 1e-3) << "largest velocity difference over the largest speed";
-  EXPECT_LT(d.rho, 1e-5) << "largest relative density difference";
-  EXPECT_LT(d.dt, 1e-4) << "largest relative time-step difference";
-  EXPECT_LT(d.body_pos, 1e-4) << "largest body centre difference, dp";
-  EXPECT_LT(d.body_force, 1e-3) << "largest body force difference over the largest force";
 }
 
 // DBC walls, Wendland kernel, Fourtakas diffusion, artificial viscosity, a free surface.

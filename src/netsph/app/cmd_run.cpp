@@ -1,4 +1,6 @@
 #include <csignal>
+#include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -10,6 +12,8 @@
 #include "netsph/app/scene_report.hpp"
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/distributed/distributed_stepper.hpp"
+#include "netsph/distributed/mpi_collectives.hpp"
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/net/standalone_net_run.hpp"
 #include "netsph/solver/runner.hpp"
@@ -62,9 +66,49 @@ CaseSpec restart_case(const CheckpointData& c, const std::vector<std::string>& m
   return read_case_string(c.text_of("case.toml"), c.text_of("case.source"), overrides);
 }
 
+int exit_status(const RunReport& r) {
+  if (r.status == "unstable") return 3;
+  if (r.status == "interrupted") return 130;
+  return 0;
+}
+
+/// What a finished run tells its user; the exit status.
+int report_run(const RunReport& r, const std::filesystem::path& out, bool plots) {
+  for (const auto& w : r.warnings) spdlog::warn("{}", w);
+  log_run_results(r.summary);
+  spdlog::info(
+      "{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
+      r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
+  spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
+               r.snapshots, std::filesystem::absolute(out).string());
+  if (plots) make_plots(out);  // also after a failure: the plots show what went wrong
+  if (r.checkpoint_time >= 0 && r.status != "completed") {
+    spdlog::info("continue with: netsph run --restart {} (checkpoint at t = {:.6g} s)",
+                 out.string(), r.checkpoint_time);
+  }
+  if (r.status == "unstable") {
+    spdlog::error("the simulation became unstable: {}", r.message);
+    spdlog::error("the outputs written up to that point, and a final snapshot, are in {}",
+                  out.string());
+  }
+  if (r.status == "interrupted") spdlog::warn("{}", r.message);
+  return exit_status(r);
+}
+
 }  // namespace
 
 int run_command(const RunArgs& args) {
+  // Under mpirun (more than one process) the run is distributed over the processes
+  // (distributed/); netsph touches MPI only then.
+  std::optional<MpiSession> mpi;
+  std::optional<MpiCollectives> coll;
+  if (launched_by_mpi()) {
+    mpi.emplace();
+    coll.emplace();
+    if (coll->size() == 1) coll.reset();  // one process: the plain run
+    if (coll && coll->rank() > 0) spdlog::set_level(spdlog::level::warn);  // process 0 reports
+  }
+  const bool reporting = !coll || coll->rank() == 0;
   const bool restart = !args.restart_dir.empty();
   if (restart && !args.case_choice.path.empty()) {
     throw Error("--restart",
@@ -90,19 +134,34 @@ int run_command(const RunArgs& args) {
                                     : args.out_dir.empty()
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);
-  log_also_to_file(out / "log.txt");
+  if (reporting) log_also_to_file(out / "log.txt");
 
   spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,
                spec.source);
+  if (coll && (spec.net_only() || step_backend(backend) != StepBackend::Cpu)) {
+    throw Error("mpirun", spec.net_only()
+                              ? "a standalone net case (no fluid) runs as one process"
+                              : "a distributed run needs --backend cpu (one GPU per process is "
+                                "not supported yet)");
+  }
   if (spec.net_only()) return run_net_only(spec, out, args.quiet);
-  spdlog::info("backend {}, {} OpenMP threads, output folder {}", backend, threads,
+  spdlog::info("backend {}, {} OpenMP threads{}, output folder {}", backend, threads,
+               coll ? fmt::format(" in each of {} MPI processes", coll->size()) : "",
                std::filesystem::absolute(out).string());
-  Simulation sim(spec, step_backend(backend));
-  log_scene(sim);
+  std::unique_ptr<Simulation> sim;
+  std::unique_ptr<RunStepper> stepper;
+  if (coll) {
+    stepper = std::make_unique<DistributedStepper>(spec, *coll, restart ? &checkpoint : nullptr);
+  } else {
+    sim = std::make_unique<Simulation>(spec, step_backend(backend));
+    if (restart) sim->restore_state(checkpoint);
+    stepper = std::make_unique<SingleStepper>(*sim);
+  }
+  if (reporting) log_scene(*stepper->view());
   if (restart) {
-    sim.restore_state(checkpoint);
     spdlog::info("restarting from {} at t = {:.6g} s (step {}), to end_time = {:.6g} s",
-                 checkpoint_path(out).string(), sim.time(), sim.steps(), spec.simulation.end_time);
+                 checkpoint_path(out).string(), stepper->time(), stepper->steps(),
+                 spec.simulation.end_time);
   }
 
   std::signal(SIGINT, on_interrupt);
@@ -114,33 +173,20 @@ int run_command(const RunArgs& args) {
   opt.max_steps = args.max_steps;
   opt.case_record = std::move(record);
   opt.resume = restart ? &checkpoint : nullptr;
-  const RunReport r = run_simulation(sim, opt);
+  int status = 0;
+  try {
+    const RunReport r = run_stepped(*stepper, opt);
+    status = reporting ? report_run(r, out, args.plots) : exit_status(r);
+  } catch (const std::exception& e) {
+    // One process's error (an output that cannot be written) would leave the others waiting
+    // in their next collective step: end them all.
+    if (!coll || coll->size() == 1) throw;
+    spdlog::error("process {}: {}", coll->rank(), e.what());
+    MpiSession::abort(2);
+  }
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
-
-  for (const auto& w : r.warnings) spdlog::warn("{}", w);
-  log_run_results(r.summary);
-  spdlog::info(
-      "{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
-      r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
-  spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
-               r.snapshots, std::filesystem::absolute(out).string());
-  if (args.plots) make_plots(out);  // also after a failure: the plots show what went wrong
-  if (r.checkpoint_time >= 0 && r.status != "completed") {
-    spdlog::info("continue with: netsph run --restart {} (checkpoint at t = {:.6g} s)",
-                 out.string(), r.checkpoint_time);
-  }
-  if (r.status == "unstable") {
-    spdlog::error("the simulation became unstable: {}", r.message);
-    spdlog::error("the outputs written up to that point, and a final snapshot, are in {}",
-                  out.string());
-    return 3;
-  }
-  if (r.status == "interrupted") {
-    spdlog::warn("{}", r.message);
-    return 130;
-  }
-  return 0;
+  return status;
 }
 
 }  // namespace netsph::app

@@ -19,8 +19,10 @@ int zone_containing(const std::vector<OpenBoundaryZone>& zones, const Vec3d& p) 
 }
 
 OpenBoundaryCounts update_open_boundary_particles(ParticleSet& p,
-                                                  const std::vector<OpenBoundaryZone>& zones) {
+                                                  const std::vector<OpenBoundaryZone>& zones,
+                                                  OpenBoundaryEvents* events) {
   OpenBoundaryCounts counts;
+  if (events) events->created_from.clear(), events->removed.clear();
   if (zones.empty()) return counts;
   std::vector<ZoneGeometry> geo;
   for (const OpenBoundaryZone& z : zones) geo.push_back(z.geometry());
@@ -28,6 +30,7 @@ OpenBoundaryCounts update_open_boundary_particles(ParticleSet& p,
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < n; ++i) {
     std::uint32_t entered = 0;
+    const std::size_t counted = !events || !events->counted || events->counted[i];
     switch (buffer_transition(geo.data(), geo.size(), p.kind[i], p.group[i], p.pos[i], entered)) {
       case BufferTransition::None:
         break;
@@ -37,22 +40,24 @@ OpenBoundaryCounts update_open_boundary_particles(ParticleSet& p,
         const Vec3f v = p.vel[i];
         const Real rho = p.rho[i];
         p.add(behind, v, rho, ParticleKind::Buffer, p.group[i]);
-        ++counts.created;
+        counts.created += counted;
+        if (events) events->created_from.push_back(p.id[i]);
         [[fallthrough]];
       }
       case BufferTransition::ToFluid:
         p.kind[i] = ParticleKind::Fluid;
         p.group[i] = 0;
-        ++counts.entered_fluid;
+        counts.entered_fluid += counted;
         break;
       case BufferTransition::Remove:
         p.pos[i] = {nan, nan, nan};
-        ++counts.removed;
+        counts.removed += counted;
+        if (events && counted) events->removed.push_back(p.id[i]);
         break;
       case BufferTransition::ToBuffer:
         p.kind[i] = ParticleKind::Buffer;
         p.group[i] = entered;
-        ++counts.absorbed;
+        counts.absorbed += counted;
         break;
     }
   }

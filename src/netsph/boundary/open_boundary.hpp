@@ -151,10 +151,20 @@ struct OpenBoundaryCounts {
   std::size_t absorbed = 0;       ///< fluid -> buffer
 };
 
+/// For a process of a distributed run, which holds copies of other processes' particles:
+/// which particles' events count, and what became of them.
+struct OpenBoundaryEvents {
+  const std::uint8_t* counted = nullptr;    ///< in: per particle, whose events count (null: all)
+  std::vector<std::uint32_t> created_from;  ///< out: the parent's id of each created particle
+  std::vector<std::uint32_t> removed;       ///< out: ids of counted particles removed
+};
+
 /// Applies the conversions, creations and removals above. Removed particles get a NaN
 /// position, so the next sort drops them; created particles are appended with new ids.
+/// `events` (may be null) limits the counts and reports parents and removals.
 OpenBoundaryCounts update_open_boundary_particles(ParticleSet& p,
-                                                  const std::vector<OpenBoundaryZone>& zones);
+                                                  const std::vector<OpenBoundaryZone>& zones,
+                                                  OpenBoundaryEvents* events = nullptr);
 
 /// The zone whose buffer contains p (0 <= depth <= width), or -1.
 int zone_containing(const std::vector<OpenBoundaryZone>& zones, const Vec3d& p);

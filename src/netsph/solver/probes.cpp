@@ -71,6 +71,14 @@ ProbeRecorder::ProbeRecorder(const Simulation& sim, const std::filesystem::path&
 
 ProbeRecorder::~ProbeRecorder() = default;
 
+bool ProbeRecorder::reads_particles(double time) const {
+  const double t = time * (1 + 1e-12);
+  if (t >= next_sample_ && time >= t0_ && time <= t1_) return !probes_.empty();
+  for (const auto& pr : probes_)
+    if (t >= pr->next_write) return true;
+  return false;
+}
+
 void ProbeRecorder::after_step(const Simulation& sim) {
   if (probes_.empty()) return;
   const double t = sim.time() * (1 + 1e-12);

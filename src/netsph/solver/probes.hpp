@@ -42,6 +42,8 @@ class ProbeRecorder {
   bool empty() const { return probes_.empty(); }
   /// Samples the probes whose interval has come (always at t = 0).
   void after_step(const Simulation& sim);
+  /// Whether after_step at `time` reads the particles (a distributed run gathers them then).
+  bool reads_particles(double time) const;
   /// Writes probes/<name>_mean.csv.
   void write_means() const;
   /// Per probe: type, points, files, samples averaged; point probes: the mean velocity; with a

@@ -243,6 +243,12 @@ void RunOutputs::maybe_write(const Simulation& sim, double wall_s) {
   }
 }
 
+bool RunOutputs::reads_particles(const Simulation& sim) const {
+  const double t = sim.time() * (1 + 1e-12);  // as maybe_write
+  return (snapshots_ && t >= next_snapshot_) || t >= next_series_ ||
+         probes_.reads_particles(sim.time());
+}
+
 void RunOutputs::write_final(const Simulation& sim, double wall_s) {
   if (snapshots_ && last_snapshot_step_ != sim.steps()) write_snapshot(sim);
   if (last_series_step_ != sim.steps()) write_series_row(sim, wall_s);

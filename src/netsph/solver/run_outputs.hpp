@@ -43,6 +43,9 @@ class RunOutputs {
 
   /// Writes a snapshot and/or a series row when their interval has come (always at t = 0).
   void maybe_write(const Simulation& sim, double wall_s);
+  /// Whether after_step and maybe_write at the simulation's present time read its particles
+  /// (a distributed run gathers them on process 0 only then).
+  bool reads_particles(const Simulation& sim) const;
   /// Writes the final snapshot and series row unless this exact step was written already.
   void write_final(const Simulation& sim, double wall_s);
   /// Called after every step: time averages of body forces, probe samples.

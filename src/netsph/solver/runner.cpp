@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -45,7 +46,7 @@ std::vector<std::string> collect_warnings(const Simulation& sim) {
 }
 
 nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const RunOptions& opt,
-                            const RunOutputs& outputs) {
+                            const RunOutputs& outputs, int processes) {
   const CaseSpec& s = sim.spec();
   const GlobalMeasures g = measure(sim);
   nlohmann::json j;
@@ -75,7 +76,8 @@ nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const Run
   j["performance"] = {{"wall_s", r.wall_s},
                       {"particle_steps_per_s", r.particle_steps_per_s},
                       {"bytes_per_particle", r.bytes_per_particle},
-                      {"threads", omp_get_max_threads()}};
+                      {"threads", omp_get_max_threads()},
+                      {"processes", processes}};
   j["final_state"] = {{"kinetic_energy_J", g.kinetic_energy},
                       {"fluid_mass_kg", g.fluid_mass},
                       {"max_speed_m_s", g.max_speed},
@@ -121,23 +123,37 @@ std::vector<std::string> recorded_overrides(const CheckpointData& checkpoint) {
 }
 
 RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
-  const CaseSpec& spec = sim.spec();
+  SingleStepper stepper(sim);
+  return run_stepped(stepper, opt);
+}
+
+RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
+  // The process that holds the view writes the outputs (the only process, without MPI); the
+  // others step and take part when the view gathers particles. Every decision that changes the
+  // course of the loop is the same on every process: the time, step count and dt are global,
+  // stop requests are combined, and process 0 says when the outputs need particles.
+  const CaseSpec& spec = stepper.spec();
   const double end = spec.simulation.end_time;
-  const double start_time = sim.time();
-  RunOutputs outputs(sim, opt.out_dir, spec.output.snapshots, opt.resume);
+  const double start_time = stepper.time();
+  stepper.refresh_view(true);
+  const Simulation* view = stepper.view();
+  std::optional<RunOutputs> outputs;
+  if (view) outputs.emplace(*view, opt.out_dir, spec.output.snapshots, opt.resume);
   // Checkpoints every checkpoint_every seconds of simulated time (default: a tenth of the
   // run) and at the end, so that a run that dies loses at most that much.
   const double checkpoint_every =
       spec.output.checkpoint_every > 0 ? spec.output.checkpoint_every : end / 10;
-  double next_checkpoint = sim.time() + checkpoint_every;
+  double next_checkpoint = stepper.time() + checkpoint_every;
   double checkpoint_time = -1;
   const auto write_checkpoint = [&] {
+    if (!view) return;
     CheckpointData c = opt.case_record;
-    sim.save_state(c);
-    outputs.save_state(c);
+    view->save_state(c);
+    outputs->save_state(c);
     write_checkpoint_file(checkpoint_path(opt.out_dir), c);
-    checkpoint_time = sim.time();
+    checkpoint_time = view->time();
   };
+  const bool show_progress = opt.progress && view;
   ProgressReporter progress(end, stderr, opt.plain_progress);
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -147,59 +163,68 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
   RunReport r;
   double particle_steps = 0;
   bool warned_lost = false;
-  if (!opt.resume) outputs.maybe_write(sim, 0.0);
+  if (!opt.resume && view) outputs->maybe_write(*view, 0.0);
   try {
-    while (sim.time() < end * (1 - 1e-12)) {
-      if (opt.max_steps > 0 && sim.steps() >= opt.max_steps) {
+    while (stepper.time() < end * (1 - 1e-12)) {
+      if (opt.max_steps > 0 && stepper.steps() >= opt.max_steps) {
         r.status = "step limit";
         break;
       }
-      if (stop_requested()) {
+      if (stepper.any(stop_requested())) {
         r.status = "interrupted";
-        r.message =
-            fmt::format("stopped by the user at t = {:.6g} s (step {})", sim.time(), sim.steps());
+        r.message = fmt::format("stopped by the user at t = {:.6g} s (step {})", stepper.time(),
+                                stepper.steps());
         break;
       }
-      particle_steps += static_cast<double>(sim.particle_count());
-      sim.step();
-      outputs.after_step(sim);
-      if (sim.diagnostics().lost_total > 0 && !warned_lost) {
-        spdlog::warn(
-            "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
-            "series.csv, lost_particles); enlarge [domain] if they should stay",
-            sim.time());
-        warned_lost = true;
+      particle_steps += static_cast<double>(stepper.particle_count());
+      stepper.step();
+      const bool checkpoint_due =
+          stepper.time() >= next_checkpoint * (1 - 1e-12) && stepper.time() < end * (1 - 1e-12);
+      stepper.refresh_view(false);
+      if (stepper.from_view_process(view && (checkpoint_due || outputs->reads_particles(*view))))
+        stepper.refresh_view(true);
+      if (view) {
+        outputs->after_step(*view);
+        if (view->diagnostics().lost_total > 0 && !warned_lost) {
+          spdlog::warn(
+              "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
+              "series.csv, lost_particles); enlarge [domain] if they should stay",
+              view->time());
+          warned_lost = true;
+        }
+        outputs->maybe_write(*view, wall());
       }
-      outputs.maybe_write(sim, wall());
-      if (sim.time() >= next_checkpoint * (1 - 1e-12) && sim.time() < end * (1 - 1e-12)) {
+      if (checkpoint_due) {
         write_checkpoint();
-        while (next_checkpoint <= sim.time() * (1 + 1e-12)) next_checkpoint += checkpoint_every;
+        while (next_checkpoint <= stepper.time() * (1 + 1e-12)) next_checkpoint += checkpoint_every;
       }
-      if (opt.progress) progress.update(sim.time(), sim.steps(), sim.particle_count());
+      if (show_progress) progress.update(stepper.time(), stepper.steps(), stepper.particle_count());
     }
     if (r.status.empty()) r.status = "completed";
   } catch (const SimulationUnstable& e) {
     r.status = "unstable";
     r.message = e.what();
   }
-  if (opt.progress) progress.finish(sim.time(), sim.steps(), sim.particle_count());
+  if (show_progress) progress.finish(stepper.time(), stepper.steps(), stepper.particle_count());
 
   r.wall_s = wall();
-  r.steps = sim.steps();
-  r.sim_time = sim.time();
+  r.steps = stepper.steps();
+  r.sim_time = stepper.time();
   r.particle_steps_per_s = r.wall_s > 0 ? particle_steps / r.wall_s : 0;
-  r.bytes_per_particle = sim.bytes_per_particle();
-  r.warnings = collect_warnings(sim);
+  r.bytes_per_particle = stepper.bytes_per_particle();
+  stepper.refresh_view(true);
+  if (!view) return r;
+  r.warnings = collect_warnings(*view);
   try {
-    outputs.write_final(sim, r.wall_s);
+    outputs->write_final(*view, r.wall_s);
     // The state of an unstable run is broken: its last good checkpoint stays.
     if (r.status != "unstable") write_checkpoint();
   } catch (const Error& e) {
     r.warnings.push_back(std::string("final output failed: ") + e.what());
   }
   r.checkpoint_time = checkpoint_time;
-  r.snapshots = outputs.snapshots_written();
-  r.summary = summary_json(sim, r, opt, outputs);
+  r.snapshots = outputs->snapshots_written();
+  r.summary = summary_json(*view, r, opt, *outputs, stepper.processes());
   if (opt.resume) r.summary["time"]["restarted_from_s"] = start_time;
   write_file_atomic(opt.out_dir / "summary.json", r.summary.dump(2) + "\n");
   return r;

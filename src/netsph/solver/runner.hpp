@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "netsph/solver/run_stepper.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph {
@@ -55,6 +56,10 @@ struct RunReport {
 };
 
 RunReport run_simulation(Simulation& sim, const RunOptions& options);
+/// The same for any stepper (solver/run_stepper.hpp): a distributed run's processes all call
+/// it; the one holding the view writes the outputs and gets the whole report, the others a
+/// report without summary.
+RunReport run_stepped(RunStepper& stepper, const RunOptions& options);
 
 /// Async-signal-safe: asks a running simulation to stop after the current step.
 void request_stop();

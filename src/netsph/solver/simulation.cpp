@@ -99,6 +99,9 @@ void Simulation::reduce_body_forces() {
   // Serial over particles in sorted order: the sums do not depend on the thread count.
   for (std::size_t i = 0; i < p_.size(); ++i) {
     if (p_.kind[i] != ParticleKind::Body) continue;
+    // Body particles sit where the bodies' states put them, the same on every process, so
+    // exactly one process counts each.
+    if (partition_ && !partition_->owns(p_.pos[i])) continue;
     RigidBody& b = bodies[p_.group[i]];
     const Vec3d r = p_.pos[i] - b.state.com;
     const Vec3d f = Vec3d(acc_[i]) * m, fc = Vec3d(contact_[i]) * m;
@@ -106,6 +109,18 @@ void Simulation::reduce_body_forces() {
     b.fluid_torque += cross(r, f);
     b.contact_force += fc;
     b.contact_torque += cross(r, fc);
+  }
+  if (partition_) {
+    std::vector<double> loads;
+    loads.reserve(12 * bodies.size());
+    for (const auto& b : bodies)
+      for (const Vec3d* v : {&b.fluid_force, &b.fluid_torque, &b.contact_force, &b.contact_torque})
+        loads.insert(loads.end(), {v->x, v->y, v->z});
+    partition_->global_sum(loads);
+    std::size_t k = 0;
+    for (auto& b : bodies)
+      for (Vec3d* v : {&b.fluid_force, &b.fluid_torque, &b.contact_force, &b.contact_torque})
+        *v = {loads[k], loads[k + 1], loads[k + 2]}, k += 3;
   }
 }
 
@@ -150,7 +165,13 @@ void Simulation::sort_particles(bool mid_step) {
   diag_.lost_total += before - p_.size();
 }
 
-double Simulation::compute_dt(const RateReductions& r) {
+double Simulation::compute_dt(const RateReductions& local) {
+  RateReductions r = local;
+  if (partition_) {
+    // Each process reduced over the particles it owns (the view's reduce_mask).
+    r.max_acc = partition_->global_max(r.max_acc);
+    r.max_visc_dt = partition_->global_max(r.max_visc_dt);
+  }
   diag_.dt_limits =
       compute_time_step(scene_.model, spec_.simulation.cfl, {r.max_acc, r.max_visc_dt});
   double dt = diag_.dt_limits.dt;
@@ -258,6 +279,20 @@ void Simulation::apply_mdbc() {
   diag_.mdbc_fallbacks = fallbacks.load();
 }
 
+std::int64_t Simulation::first_owned_non_finite() const {
+  // Halo copies are dropped after the step: only the particles this process owns count.
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    const bool finite = std::isfinite(p_.pos[i].x) && std::isfinite(p_.pos[i].y) &&
+                        std::isfinite(p_.pos[i].z) && std::isfinite(p_.vel[i].x) &&
+                        std::isfinite(p_.vel[i].y) && std::isfinite(p_.vel[i].z) &&
+                        std::isfinite(p_.rho[i]);
+    if (finite) continue;
+    if (!std::isfinite(p_.pos[i].x + p_.pos[i].y + p_.pos[i].z) || partition_->owns(p_.pos[i]))
+      return static_cast<std::int64_t>(i);
+  }
+  return -1;
+}
+
 void Simulation::fail_non_finite(std::int64_t i) const {
   sync_from_device();
   const Vec3d x = p_.pos[i];
@@ -277,7 +312,18 @@ void Simulation::step() {
 
   // Open boundaries first: conversions use positions only, and the sort then places the
   // created particles and drops the removed ones.
-  const OpenBoundaryCounts ob = update_open_boundary_particles(p_, scene_.zones);
+  // A process of a distributed run counts the events of its own particles only, and numbers
+  // the created ones with the others.
+  const bool numbered = partition_ && !scene_.zones.empty();
+  OpenBoundaryEvents events;
+  const std::size_t before_update = p_.size();
+  if (numbered) {
+    mark_owned();
+    events.counted = owned_.data();
+  }
+  const OpenBoundaryCounts ob =
+      update_open_boundary_particles(p_, scene_.zones, numbered ? &events : nullptr);
+  if (numbered) partition_->number_created(p_, before_update, events);
   diag_.open.entered_fluid += ob.entered_fluid;
   diag_.open.created += ob.created;
   diag_.open.removed += ob.removed;
@@ -285,7 +331,8 @@ void Simulation::step() {
   const std::size_t lost_before = diag_.lost_total;
   sort_particles(false);
   diag_.lost_total -= ob.removed;  // left through an outlet: not lost
-  check_lost(diag_.lost_total - lost_before);
+  // A distributed run checks its processes' losses together, between steps.
+  if (!partition_) check_lost(diag_.lost_total - lost_before);
 
   update_wall_kinematics(0.0);  // velocities at t for the boundary state
   place_body_particles(false);
@@ -294,7 +341,12 @@ void Simulation::step() {
 
   const bool bodies = !scene_.bodies.empty();
   build_view(false);
+  if (partition_) {
+    mark_owned();
+    view_.reduce_mask = owned_.data();
+  }
   const RateReductions r0 = compute_rates(m, grid_, view_, p_.kind, acc_, drho_);
+  view_.reduce_mask = nullptr;
   if (bodies) compute_contacts(contact_model_, grid_, view_, p_.kind, contact_);
   const double dt = compute_dt(r0);
   update_wall_kinematics(dt);
@@ -317,28 +369,38 @@ void Simulation::step() {
     reduce_body_forces();
     advance_bodies(true, dt);
   }
-  const std::int64_t bad =
+  std::int64_t bad =
       symplectic_corrector(p_, start_, in, m, shift_on_ ? &shift_sums_ : nullptr, &shift_params_);
   place_body_particles(false);
   time_ += dt;
   ++steps_;
-  if (bad >= 0) fail_non_finite(bad);
 
+  // Before the check below: a process that stops there must not skip this collective step.
   double vmax2 = 0;
-  for (std::size_t i = 0; i < p_.size(); ++i)
-    if (is_fluid(p_.kind[i])) vmax2 = std::max(vmax2, static_cast<double>(norm2(p_.vel[i])));
-  diag_.max_speed = std::sqrt(vmax2);
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (!is_fluid(p_.kind[i]) || (partition_ && !partition_->owns(p_.pos[i]))) continue;
+    vmax2 = std::max(vmax2, static_cast<double>(norm2(p_.vel[i])));
+  }
+  diag_.max_speed = std::sqrt(partition_ ? partition_->global_max(vmax2) : vmax2);
+  if (bad >= 0 && partition_) bad = first_owned_non_finite();
+  if (bad >= 0) fail_non_finite(bad);
 }
 
 void Simulation::check_lost(std::size_t lost_this_step) const {
-  if (diag_.lost_total == 0) return;
-  const double fluid = static_cast<double>(std::max<std::size_t>(initial_fluid_, 1));
+  check_lost_fluid(spec_, time_, steps_, lost_this_step, diag_.lost_total, initial_fluid_,
+                   diag_.last_lost);
+}
+
+void check_lost_fluid(const CaseSpec& spec, double time, std::int64_t steps,
+                      std::size_t lost_this_step, std::size_t lost_total, std::size_t initial_fluid,
+                      std::span<const StepDiagnostics::Lost> last_lost) {
+  if (lost_total == 0) return;
+  const double fluid = static_cast<double>(std::max<std::size_t>(initial_fluid, 1));
   const bool burst = static_cast<double>(lost_this_step) > std::max(10.0, 0.01 * fluid);
-  const bool total =
-      static_cast<double>(diag_.lost_total) > spec_.simulation.max_lost_fraction * fluid;
+  const bool total = static_cast<double>(lost_total) > spec.simulation.max_lost_fraction * fluid;
   if (!burst && !total) return;
   std::string where;
-  for (const auto& l : diag_.last_lost) {
+  for (const auto& l : last_lost) {
     where += fmt::format(
         "{}id {} at ({:.4g}, {:.4g}, {:.4g}) m moving ({:.3g}, {:.3g}, {:.3g}) m/s",
         where.empty() ? ": " : "; ", l.id, l.pos.x, l.pos.y, l.pos.z, l.vel.x, l.vel.y, l.vel.z);
@@ -348,10 +410,10 @@ void Simulation::check_lost(std::size_t lost_this_step) const {
       fmt::format("fluid is leaving the domain at t = {:.6g} s (step {}): {} particles in this "
                   "step, {} in all ({:.2g}% of the initial fluid; the limit is {} in one step or "
                   "simulation.max_lost_fraction = {} in all); the last to leave{}",
-                  time_, steps_, lost_this_step, diag_.lost_total,
-                  100 * static_cast<double>(diag_.lost_total) / fluid,
+                  time, steps, lost_this_step, lost_total,
+                  100 * static_cast<double>(lost_total) / fluid,
                   static_cast<std::size_t>(std::max(10.0, 0.01 * fluid)),
-                  spec_.simulation.max_lost_fraction, where));
+                  spec.simulation.max_lost_fraction, where));
 }
 
 std::string Simulation::fastest_accelerating() const {

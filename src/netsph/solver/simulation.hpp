@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,7 @@
 #include "netsph/neighbors/cell_grid.hpp"
 #include "netsph/solver/net_coupling.hpp"
 #include "netsph/solver/scene.hpp"
+#include "netsph/solver/step_partition.hpp"
 #include "netsph/sph/shifting.hpp"
 #include "netsph/sph/time_step.hpp"
 
@@ -59,6 +61,13 @@ struct StepDiagnostics {
   };
   std::vector<Lost> last_lost;
 };
+
+/// Stops a run (SimulationUnstable) when fluid leaves the domain too fast: more than 1% of the
+/// initial fluid (at least 10 particles) in one step, or more than
+/// simulation.max_lost_fraction in all. `last_lost`: the last few, for the report.
+void check_lost_fluid(const CaseSpec& spec, double time, std::int64_t steps,
+                      std::size_t lost_this_step, std::size_t lost_total, std::size_t initial_fluid,
+                      std::span<const StepDiagnostics::Lost> last_lost);
 
 /// Where the particle work of a step runs: the CPU backend (OpenMP, backend/cpu), the CUDA
 /// device (the device-shaped step, backend/device on the CUDA executor), or that same step on
@@ -107,6 +116,8 @@ class Simulation {
   double last_dt() const { return diag_.dt_limits.dt; }
   const StepDiagnostics& diagnostics() const { return diag_; }
   double dt_floor() const { return dt_floor_; }
+  /// Fluid particles of the case at the start (the reference of the lost-fluid check).
+  std::size_t initial_fluid() const { return initial_fluid_; }
   bool shifting_enabled() const { return shift_on_; }
 
   /// Pressure of every particle from the equation of state.
@@ -119,6 +130,23 @@ class Simulation {
   void set_device_profiling(bool on);
   /// Seconds per phase of the device step since profiling was switched on; none on the CPU.
   std::optional<DevicePhaseTimes> device_phase_times() const;
+
+  /// Makes this one process of a distributed run (distributed/distributed_simulation.hpp):
+  /// dt, the bodies' loads and the largest speed come from the particles `partition` says
+  /// this process owns, reduced over the processes; the caller exchanges particles between
+  /// steps and checks for lost fluid over all of them. CPU backend only.
+  /// `partition` must outlive the simulation.
+  void set_partition(StepPartition* partition);
+  const StepPartition* partition() const { return partition_; }
+
+  /// For a distributed run's outputs: this simulation takes `particles` (every process's own)
+  /// and the time, step count, diagnostics, bodies and nets of `stepped` (one process's
+  /// simulation of the same case), and sorts them so that grid() matches.
+  void adopt_state(const Simulation& stepped, const StepDiagnostics& diagnostics,
+                   ParticleSet&& particles);
+  /// The time, step count, bodies and nets of `stepped` and the run's `diagnostics` only
+  /// (between outputs).
+  void adopt_global_state(const Simulation& stepped, const StepDiagnostics& diagnostics);
 
   /// Adds the state a restart needs to `c` (solver/simulation_checkpoint.cpp).
   void save_state(CheckpointData& c) const;
@@ -149,6 +177,11 @@ class Simulation {
   void advance_bodies(bool corrector, double dt);
   Vec3f body_point_velocity(std::size_t i) const;
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
+  /// With a partition: owned_ from the present positions (exact right after the exchange).
+  void mark_owned();
+  /// With a partition: the first non-finite particle this process owns (or whose position is
+  /// not finite), -1 if none.
+  std::int64_t first_owned_non_finite() const;
   /// Stops the run when fluid leaves the domain too fast (SimulationSpec::max_lost_fraction).
   void check_lost(std::size_t lost_this_step) const;
   /// "particle id N (kind) at (x, y, z) m, velocity (...) m/s, |a| ..." of the fluid particle
@@ -187,6 +220,9 @@ class Simulation {
   std::int64_t steps_ = 0;
   double dt_floor_ = 0;
   StepDiagnostics diag_;
+
+  StepPartition* partition_ = nullptr;
+  std::vector<std::uint8_t> owned_;  // with a partition: which particles this process owns
 
   StepBackend backend_ = StepBackend::Cpu;
   std::unique_ptr<DeviceRun> device_;

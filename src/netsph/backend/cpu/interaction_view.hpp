@@ -26,6 +26,10 @@ struct InteractionView {
   /// index; body particles make contact with particles of other solids.
   std::vector<std::int32_t> solid;
   static constexpr std::int32_t kNotSolid = -1, kWallSolid = -2;
+  /// Which particles enter the rates pass's reductions (max |a|, the viscous dt criterion):
+  /// null for all. A process of a distributed run (distributed/) passes the particles it
+  /// owns, so that its halo copies, whose sums miss neighbours, never limit dt.
+  const std::uint8_t* reduce_mask = nullptr;
 
   /// Copies the particles. The continuity velocity is the velocity (no separate arrays)
   /// until with_continuity_velocity().

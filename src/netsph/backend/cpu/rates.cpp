@@ -241,8 +241,10 @@ RateReductions rates_loop(const FluidModel& m, const CellGrid& grid, const Inter
           const Vec3f total = r.rates.acc + m.gravity;
           acc[a] = total;
           drho[a] = r.rates.drho;
-          max_acc2 = std::max(max_acc2, static_cast<double>(norm2(total)));
-          max_visc = std::max(max_visc, static_cast<double>(r.rates.visc_dt));
+          if (!v.reduce_mask || v.reduce_mask[a]) {
+            max_acc2 = std::max(max_acc2, static_cast<double>(norm2(total)));
+            max_visc = std::max(max_visc, static_cast<double>(r.rates.visc_dt));
+          }
           if constexpr (Shift) shifting->grad_c[a] = r.grad_c, shifting->div_r[a] = r.div_r;
           break;
         }
@@ -250,7 +252,8 @@ RateReductions rates_loop(const FluidModel& m, const CellGrid& grid, const Inter
           const RateSums s = wall_sums<Kernel>(m, v, a, ranges, nranges);
           acc[a] = {};
           drho[a] = s.drho;
-          max_visc = std::max(max_visc, static_cast<double>(s.visc_dt));
+          if (!v.reduce_mask || v.reduce_mask[a])
+            max_visc = std::max(max_visc, static_cast<double>(s.visc_dt));
           break;
         }
         case ParticleKind::Buffer:
@@ -261,7 +264,8 @@ RateReductions rates_loop(const FluidModel& m, const CellGrid& grid, const Inter
           const RateSums s = body_sums<Kernel, Visc>(m, v, a, ranges, nranges);
           acc[a] = s.acc;  // no gravity: the body's weight acts on its centre of mass
           drho[a] = s.drho;
-          max_visc = std::max(max_visc, static_cast<double>(s.visc_dt));
+          if (!v.reduce_mask || v.reduce_mask[a])
+            max_visc = std::max(max_visc, static_cast<double>(s.visc_dt));
           break;
         }
       }

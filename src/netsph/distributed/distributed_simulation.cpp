@@ -1,0 +1,187 @@
+#include "netsph/distributed/distributed_simulation.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+namespace netsph {
+namespace {
+
+std::unique_ptr<Simulation> whole_scene(const CaseSpec& spec, const CheckpointData* resume) {
+  auto sim = std::make_unique<Simulation>(spec, StepBackend::Cpu);
+  if (resume) sim->restore_state(*resume);
+  return sim;
+}
+
+SlabPartition make_slabs(const Simulation& sim, int ranks) {
+  SlabPartition s = balanced_slabs(sim.particles(), sim.grid(), sim.scene().domain_min,
+                                   sim.scene().domain_max, ranks);
+  std::vector<ZoneGeometry> zones;
+  for (const OpenBoundaryZone& z : sim.scene().zones) zones.push_back(z.geometry());
+  s.halo = halo_width(s, sim.particles(), sim.grid(), sim.model().support, zones);
+  return s;
+}
+
+Bytes pack_lost(const std::vector<StepDiagnostics::Lost>& lost) {
+  Bytes b(lost.size() * sizeof(StepDiagnostics::Lost));
+  if (!lost.empty()) std::memcpy(b.data(), lost.data(), b.size());
+  return b;
+}
+
+}  // namespace
+
+DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& coll,
+                                             const CheckpointData* resume)
+    : coll_(coll),
+      local_(whole_scene(spec, resume)),
+      slabs_(make_slabs(*local_, coll.size())),
+      exchange_ptr_(std::make_unique<ParticleExchange>(slabs_, coll)),
+      exchange_(*exchange_ptr_) {
+  Simulation& sim = *local_;
+  initial_fluid_ = sim.initial_fluid();
+  total_particles_ = sim.particles().size();
+  // A restored run's counts so far are the whole run's: every process starts from them and
+  // adds only its own events.
+  lost_total_ = sim.diagnostics().lost_total;
+  open_base_ = sim.diagnostics().open;
+  created_before_ = open_base_.created, removed_before_ = open_base_.removed;
+  diag_ = sim.diagnostics();
+  sim.set_partition(this);
+  exchange_.distribute(sim.particles());
+  if (coll_.rank() == 0) {
+    std::string cuts;
+    for (double c : slabs_.cuts) cuts += fmt::format("{}{:.4g}", cuts.empty() ? "" : ", ", c);
+    spdlog::info("distributed over {} processes: slabs along {} cut at {} m, halo {:.4g} m",
+                 coll_.size(), "xyz"[slabs_.axis], cuts, slabs_.halo);
+    for (int r = 0; r < slabs_.ranks(); ++r) {
+      if (slabs_.cuts[r + 1] - slabs_.cuts[r] < slabs_.halo) {
+        spdlog::warn(
+            "slab {} is {:.4g} m long, shorter than the halo ({:.4g} m): each process "
+            "holds more copies than particles of its own; fewer processes would do",
+            r, slabs_.cuts[r + 1] - slabs_.cuts[r], slabs_.halo);
+        break;
+      }
+    }
+  }
+}
+
+DistributedSimulation::~DistributedSimulation() = default;
+
+void DistributedSimulation::step() {
+  std::string message;
+  bool failed = false;
+  try {
+    local_->step();
+  } catch (const SimulationUnstable& e) {
+    failed = true;
+    message = e.message();
+  }
+  // The step's collectives all come before the checks that throw (solver/simulation.cpp), so
+  // every process gets here; the first to fail speaks for all.
+  const int first = coll_.min(failed ? coll_.rank() : coll_.size());
+  if (first < coll_.size()) {
+    coll_.broadcast(message, first);
+    throw SimulationUnstable("solver", first == coll_.rank() || coll_.size() == 1
+                                           ? message
+                                           : fmt::format("{} (process {})", message, first));
+  }
+  Simulation& sim = *local_;
+  const ExchangeReport report = exchange_.exchange(sim.particles(), sim.grid());
+  check_lost(report);
+}
+
+void DistributedSimulation::number_created(ParticleSet& p, std::size_t first,
+                                           const OpenBoundaryEvents& events) {
+  // The processes that own the parents speak for the particles created from them; every
+  // process holding a copy of a parent created the same particle, and numbers it by its
+  // parent's rank among all parents of the step.
+  std::vector<std::uint32_t> parents;
+  for (const std::uint32_t parent : events.created_from)
+    if (exchange_.owned(parent)) parents.push_back(parent);
+  Bytes mine(parents.size() * sizeof(std::uint32_t));
+  if (!parents.empty()) std::memcpy(mine.data(), parents.data(), mine.size());
+  const std::vector<Bytes> received = coll_.exchange(std::vector<Bytes>(coll_.size(), mine));
+  for (int r = 0; r < coll_.size(); ++r) {
+    if (r == coll_.rank()) continue;
+    const std::size_t at = parents.size();
+    parents.resize(at + received[r].size() / sizeof(std::uint32_t));
+    if (!received[r].empty())
+      std::memcpy(parents.data() + at, received[r].data(), received[r].size());
+  }
+  std::sort(parents.begin(), parents.end());
+  // Every process entered the step with the same next id.
+  const std::uint32_t base = p.next_id - static_cast<std::uint32_t>(events.created_from.size());
+  for (std::size_t k = 0; k < events.created_from.size(); ++k) {
+    const std::uint32_t parent = events.created_from[k];
+    const auto it = std::lower_bound(parents.begin(), parents.end(), parent);
+    if (it == parents.end() || *it != parent) {
+      throw Error("distributed", fmt::format("particle {} created a buffer particle on process {} "
+                                             "but not on its owner: the halo is too thin",
+                                             parent, coll_.rank()));
+    }
+    const std::uint32_t id = base + static_cast<std::uint32_t>(it - parents.begin());
+    p.id[first + k] = id;
+    if (exchange_.owned(parent)) exchange_.set_owned(id, true);
+  }
+  p.next_id = base + static_cast<std::uint32_t>(parents.size());
+  for (const std::uint32_t id : events.removed) exchange_.set_owned(id, false);
+}
+
+void DistributedSimulation::check_lost(const ExchangeReport& report) {
+  // Losses and open-boundary events (each process counted its own) over all processes.
+  const OpenBoundaryCounts& open = local_->diagnostics().open;
+  const OpenBoundaryCounts& base = open_base_;
+  const auto events = [](std::size_t now, std::size_t before) {
+    return static_cast<double>(now - before);
+  };
+  std::vector<double> counts = {
+      static_cast<double>(report.lost), events(open.entered_fluid, base.entered_fluid),
+      events(open.created, base.created), events(open.removed, base.removed),
+      events(open.absorbed, base.absorbed)};
+  coll_.sum(counts);
+  const auto lost = static_cast<std::uint64_t>(counts[0]);
+  const auto total = [](double sum, std::size_t before) {
+    return before + static_cast<std::size_t>(sum);
+  };
+  diag_ = local_->diagnostics();
+  diag_.open = {total(counts[1], base.entered_fluid), total(counts[2], base.created),
+                total(counts[3], base.removed), total(counts[4], base.absorbed)};
+  lost_total_ += lost;
+  total_particles_ = total_particles_ - lost + (diag_.open.created - created_before_) -
+                     (diag_.open.removed - removed_before_);
+  created_before_ = diag_.open.created, removed_before_ = diag_.open.removed;
+  diag_.lost_total = lost_total_;
+  // The last to leave, as process 0 reports them (gathered only when some left).
+  if (lost > 0) {
+    const std::vector<Bytes> all = coll_.gather(pack_lost(report.last_lost));
+    for (const Bytes& b : all) {
+      const std::size_t n = b.size() / sizeof(StepDiagnostics::Lost);
+      for (std::size_t k = 0; k < n; ++k) {
+        StepDiagnostics::Lost l;
+        std::memcpy(&l, b.data() + k * sizeof l, sizeof l);
+        if (last_lost_.size() == 5) last_lost_.erase(last_lost_.begin());
+        last_lost_.push_back(l);
+      }
+    }
+  }
+  diag_.last_lost = last_lost_;
+  check_lost_fluid(local_->spec(), local_->time(), local_->steps(), lost, lost_total_,
+                   initial_fluid_, last_lost_);
+}
+
+void DistributedSimulation::gather_into(Simulation* whole, bool particles) const {
+  if (!particles) {
+    if (whole) whole->adopt_global_state(*local_, diag_);
+    return;
+  }
+  const std::vector<Bytes> all = coll_.gather(exchange_.pack_owned(local_->particles()));
+  if (!whole) return;
+  ParticleSet p;
+  p.next_id = local_->particles().next_id;
+  for (const Bytes& b : all) ParticleExchange::unpack(b, p);
+  whole->adopt_state(*local_, diag_, std::move(p));
+}
+
+}  // namespace netsph

@@ -1,0 +1,77 @@
+#pragma once
+// A Simulation split over processes (MPI ranks, or threads in the tests) by slabs along the
+// domain's longest axis (slab_partition.hpp). Every process builds the whole scene, keeps its
+// own particles and a halo, and steps them with the CPU backend; dt, the bodies' loads and the
+// largest speed are reduced over the processes inside the step (solver/step_partition.hpp),
+// and particles move between processes after it (particle_exchange.hpp). Bodies and nets are
+// advanced by every process alike from the summed loads. The outputs read a whole Simulation
+// on process 0, which gather_into() fills when they need particles.
+//
+// Not yet distributed: the device backends. Each
+// process builds the whole scene (or restores a whole checkpoint) before keeping its part, so
+// the set-up needs the memory of the whole case on every process, and the slabs are cut once,
+// at the start (no rebalancing as the flow moves particles between them).
+#include <memory>
+
+#include "netsph/distributed/collectives.hpp"
+#include "netsph/distributed/particle_exchange.hpp"
+#include "netsph/distributed/slab_partition.hpp"
+#include "netsph/solver/simulation.hpp"
+#include "netsph/solver/step_partition.hpp"
+
+namespace netsph {
+
+class DistributedSimulation final : public StepPartition {
+ public:
+  /// Collective. Throws netsph::Error (on every process alike) for more processes than the
+  /// domain has cells along its axis, or another backend than the CPU's. `resume`:
+  /// a checkpoint (of a run on any number of processes) to continue from, or null.
+  DistributedSimulation(const CaseSpec& spec, Collectives& coll,
+                        const CheckpointData* resume = nullptr);
+  ~DistributedSimulation() override;
+
+  /// One step on every process (collective). Throws SimulationUnstable on every process alike
+  /// when any of them finds the state unusable, with that process's diagnosis.
+  void step();
+
+  /// This process's part: its own particles and the halo.
+  const Simulation& local() const { return *local_; }
+  const SlabPartition& slabs() const { return slabs_; }
+  Collectives& collectives() const { return coll_; }
+  /// The particles of the whole run (every process knows it: the run creates none, and
+  /// losses are summed after each step).
+  std::uint64_t particle_count() const { return total_particles_; }
+  /// The particles this process owns.
+  std::size_t owned_count() const { return exchange_.owned_count(); }
+  /// Diagnostics of the whole run: lost particles counted over all processes.
+  const StepDiagnostics& diagnostics() const { return diag_; }
+
+  /// Collective: process 0 passes a Simulation of the same case, which receives every
+  /// process's own particles and the run's time, bodies, nets and diagnostics; the others
+  /// pass null. With `particles` false only the latter (no communication).
+  void gather_into(Simulation* whole, bool particles) const;
+
+  // StepPartition
+  bool owns(const Vec3d& p) const override { return slabs_.owner_of(p) == coll_.rank(); }
+  double global_max(double v) const override { return coll_.max(v); }
+  void global_sum(std::span<double> v) const override { coll_.sum(v); }
+  void number_created(ParticleSet& p, std::size_t first, const OpenBoundaryEvents& events) override;
+
+ private:
+  void check_lost(const ExchangeReport& report);
+
+  Collectives& coll_;
+  std::unique_ptr<Simulation> local_;
+  SlabPartition slabs_;
+  std::unique_ptr<ParticleExchange> exchange_ptr_;
+  ParticleExchange& exchange_;
+  std::size_t initial_fluid_ = 0;  // of the whole case
+  std::uint64_t lost_total_ = 0;   // over all processes
+  std::uint64_t total_particles_ = 0;
+  std::size_t created_before_ = 0, removed_before_ = 0;  // open-boundary events, all processes
+  OpenBoundaryCounts open_base_;  // the restored run's events (every process has them)
+  std::vector<StepDiagnostics::Lost> last_lost_;
+  StepDiagnostics diag_;
+};
+
+}  // namespace netsph

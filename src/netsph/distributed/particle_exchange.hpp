@@ -1,0 +1,58 @@
+#pragma once
+// Moves particles between the processes of a distributed run after each step: a particle
+// whose position left this process's slab goes to the slab's owner, one that left the domain
+// is dropped (lost), and the halo (copies of the particles within the halo width of another
+// slab) is sent afresh. Which particles a process owns is kept as a set of ids, not
+// recomputed from positions: a halo copy that crossed into this slab during the step is
+// still the other process's particle (its owner sends it), so no particle is ever doubled
+// or dropped by a round-off difference between two copies.
+#include <cstdint>
+#include <vector>
+
+#include "netsph/distributed/collectives.hpp"
+#include "netsph/distributed/slab_partition.hpp"
+#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/solver/simulation.hpp"
+
+namespace netsph {
+
+struct ExchangeReport {
+  std::uint64_t lost = 0;  ///< own particles that left the domain (or vanished) in the step
+  std::vector<StepDiagnostics::Lost> last_lost;  ///< up to 5 of them
+  std::uint64_t sent = 0, received = 0;          ///< migrated to and from other processes
+  std::uint64_t halo = 0;                        ///< halo copies received
+};
+
+class ParticleExchange {
+ public:
+  ParticleExchange(const SlabPartition& slabs, Collectives& coll);
+
+  /// From the whole scene, which every process builds alike: keeps this process's own
+  /// particles and its halo, without communication.
+  void distribute(ParticleSet& p);
+  /// After a step (collective). `grid` is the domain's (the simulation's).
+  ExchangeReport exchange(ParticleSet& p, const CellGrid& grid);
+
+  bool owned(std::uint32_t id) const {
+    return id / 64 < owned_.size() && (owned_[id / 64] >> (id % 64) & 1u);
+  }
+  std::size_t owned_count() const { return owned_count_; }
+  /// Makes particle `id` this process's own, or no longer (a particle created or removed by
+  /// the open boundaries).
+  void set_owned(std::uint32_t id, bool on);
+  /// This process's own particles, packed (for a gather).
+  Bytes pack_owned(const ParticleSet& p) const;
+  /// Appends packed particles to `p`.
+  static void unpack(const Bytes& bytes, ParticleSet& p);
+
+ private:
+  void send_halo(ParticleSet& p, ExchangeReport& report);
+
+  const SlabPartition& slabs_;
+  Collectives& coll_;
+  std::vector<int> halo_neighbours_;
+  std::vector<std::uint64_t> owned_;  // bit per particle id
+  std::size_t owned_count_ = 0;
+};
+
+}  // namespace netsph

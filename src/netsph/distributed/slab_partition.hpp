@@ -1,0 +1,58 @@
+#pragma once
+// Domain decomposition of a distributed run into slabs along one axis: process r owns every
+// particle whose coordinate on that axis (wrapped into a periodic axis, clamped into the
+// domain otherwise) lies in [cuts[r], cuts[r+1]), and keeps copies (the halo) of the other
+// processes' particles within `halo` of its slab.
+//
+// Why slabs, and why a wide halo: one exchange per step (after the corrector) is enough when
+// every particle a process owns has correct neighbours through both stages of the step. The
+// state of a halo copy is exact at the exchange, but its rates are not where its own
+// neighbours are missing (within one support of the halo's outer edge); each later stage
+// spreads that error one support further in: the mDBC state of a wall copy reaches ghost
+// offset + support, the rates of the first pass one support more, the second pass (after the
+// predictor) one more. So the halo is the ghost offset along the axis + 3 supports (+ the
+// distance particles may move in a step) wide (halo_width), and the owned particles' results
+// are those of one process to round-off, without a second exchange at the half step.
+#include <vector>
+
+#include "netsph/boundary/open_boundary.hpp"
+#include "netsph/core/vec3.hpp"
+#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/sph/particle_set.hpp"
+
+namespace netsph {
+
+struct SlabPartition {
+  int axis = 0;
+  std::vector<double> cuts;  ///< ranks + 1 coordinates: cuts.front() and back() bound the domain
+  bool periodic = false;     ///< the axis is periodic (its period is back() - front())
+  double halo = 0;           ///< m
+
+  int ranks() const { return static_cast<int>(cuts.size()) - 1; }
+  /// The coordinate along the axis, wrapped into a periodic axis.
+  double coordinate(const Vec3d& p) const;
+  /// The process that owns a particle at p (any p, also outside the domain).
+  int owner_of(const Vec3d& p) const;
+  /// Distance along the axis from p to process r's slab (0 inside it; the nearer image on a
+  /// periodic axis).
+  double distance_to(int r, const Vec3d& p) const;
+  /// The processes other than `r` whose slabs lie within the halo width of r's.
+  std::vector<int> halo_neighbours(int r) const;
+};
+
+/// Slabs along the axis the particles spread furthest with equal particle counts (all kinds
+/// count alike); `halo` is left for halo_width. Throws netsph::Error naming the limit when the
+/// axis cannot hold `ranks` slabs at least one cell wide.
+SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
+                             const Vec3d& domain_min, const Vec3d& domain_max, int ranks);
+
+/// The halo width the step needs along the slabs' axis (see above), m: the largest component
+/// along the axis of the mDBC ghost offsets among `particles`, and of the open boundaries'
+/// reach where a buffer lies near a cut (`zones`: the ghost nodes of a buffer lie up to twice
+/// its width from it, a created particle its width behind its parent), plus three stages of
+/// the kernel support and the displacement the grid allows, or two when nothing is
+/// interpolated at ghost nodes (the walls' and buffers' state then comes from the pass).
+double halo_width(const SlabPartition& slabs, const ParticleSet& particles, const CellGrid& grid,
+                  double support, const std::vector<ZoneGeometry>& zones);
+
+}  // namespace netsph

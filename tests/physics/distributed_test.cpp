@@ -1,0 +1,152 @@
+// A run split into slabs over several processes (distributed/) against the same case on one:
+// after N steps every particle, dt and body must agree to float round-off (each process sums
+// a particle's pairs in its own order). The processes here are threads of the test with
+// in-process collectives (distributed/thread_collectives.hpp), so the decomposition, halo and
+// exchange are checked without mpirun; tests/distributed_mpi_test.sh runs the same step under
+// mpirun.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <memory>
+#include <thread>
+
+#include "case_runs.hpp"
+#include "netsph/distributed/distributed_simulation.hpp"
+#include "netsph/distributed/thread_collectives.hpp"
+#include "state_difference.hpp"
+
+namespace netsph {
+namespace {
+
+using test::Difference;
+
+struct SplitRun {
+  std::unique_ptr<Simulation> whole;  // every process's particles, gathered
+  std::vector<double> dts;
+  std::vector<std::size_t> owned;  // particles each process owned at the end
+  std::vector<std::string> errors;
+};
+
+SplitRun run_split(const CaseSpec& spec, int processes, int steps) {
+  SplitRun run;
+  run.whole = std::make_unique<Simulation>(spec);
+  run.owned.resize(processes);
+  run.errors.resize(processes);
+  ThreadTeam team(processes);
+  std::vector<std::thread> threads;
+  for (int r = 0; r < processes; ++r) {
+    threads.emplace_back([&, r] {
+      omp_set_num_threads(1);
+      try {
+        ThreadCollectives coll(team, r);
+        DistributedSimulation sim(spec, coll);
+        for (int s = 0; s < steps; ++s) {
+          sim.step();
+          if (r == 0) run.dts.push_back(sim.local().last_dt());
+        }
+        run.owned[r] = sim.owned_count();
+        sim.gather_into(r == 0 ? run.whole.get() : nullptr, true);
+      } catch (const std::exception& e) {
+        run.errors[r] = e.what();
+      }
+    });
+  }
+  for (auto& t : threads) t.join();
+  return run;
+}
+
+Difference compare_split(const CaseSpec& spec, int processes, int steps) {
+  Simulation one(spec);
+  const std::uint32_t created_ids = one.particles().next_id;
+  std::vector<double> dts;
+  for (int s = 0; s < steps; ++s) one.step(), dts.push_back(one.last_dt());
+  const SplitRun split = run_split(spec, processes, steps);
+  for (const std::string& e : split.errors) EXPECT_EQ(e, "");
+  std::size_t owned = 0;
+  for (int r = 0; r < processes; ++r) {
+    EXPECT_GT(split.owned[r], 0u) << "process " << r << " owns nothing";
+    owned += split.owned[r];
+  }
+  EXPECT_EQ(owned, one.particles().size()) << "particles doubled or lost between processes";
+  const OpenBoundaryCounts &a = one.diagnostics().open, &b = split.whole->diagnostics().open;
+  EXPECT_EQ(b.created, a.created);
+  EXPECT_EQ(b.removed, a.removed);
+  EXPECT_EQ(b.entered_fluid, a.entered_fluid);
+  EXPECT_EQ(b.absorbed, a.absorbed);
+  EXPECT_EQ(split.whole->diagnostics().lost_total, one.diagnostics().lost_total);
+  Difference d = test::state_difference(one, *split.whole, created_ids);
+  for (std::size_t s = 0; s < dts.size() && s < split.dts.size(); ++s)
+    d.dt = std::max(d.dt, std::fabs(split.dts[s] / dts[s] - 1));
+  return d;
+}
+
+// DBC walls and a free surface: the dam's front crosses the slab boundaries.
+TEST(Distributed, DamBreak2DOnThreeProcessesMatchesOne) {
+  const CaseSpec spec = test::load_case("dambreak2d.toml", {"simulation.dp=0.04"});
+  test::expect_parity(compare_split(spec, 3, 200));
+}
+
+// 3D, mDBC walls (the halo carries their ghost offsets), cubic spline kernel, shifting.
+TEST(Distributed, DamBreak3DWithMdbcAndShiftingOnTwoProcessesMatchesOne) {
+  const CaseSpec spec = test::load_case(
+      "dambreak3d.toml",
+      {"simulation.dp=0.03", "simulation.kernel=\"cubic_spline\"", "wall.0.model=\"mdbc\"",
+       "wall.0.layers=3", "fluid.shifting={model=\"fickian\"}"});
+  test::expect_parity(compare_split(spec, 2, 40));
+}
+
+// Periodic along the split axis (each process's halo wraps round), moving mDBC walls.
+TEST(Distributed, PeriodicCouetteOnTwoProcessesMatchesOne) {
+  test::expect_parity(compare_split(test::load_case("couette2d.toml"), 2, 200));
+}
+
+// A floating mDBC box: its loads are summed over the processes that own its particles.
+TEST(Distributed, FloatingBoxOnTwoProcessesMatchesOne) {
+  const CaseSpec spec = test::load_case("floating_box2d.toml", {"simulation.dp=0.04"});
+  test::expect_parity(compare_split(spec, 2, 200));
+}
+
+// A knot on a twine in a periodic current with shifting, the knot across the cut: the net's
+// solver runs on every process from the summed loads. Without the case's inlet and outlet
+// buffers (not distributed yet): the duct is periodic and its walls move with the current.
+TEST(Distributed, CoupledNetOnTwoProcessesMatchesOne) {
+  CaseSpec spec = test::load_case("net_tethered_knot.toml");
+  spec.inlets.clear();
+  spec.outlets.clear();
+  test::expect_parity(compare_split(spec, 2, 40));
+}
+
+// Inlet and outlet buffers: particles created at the inlet get the same ids on every process
+// holding a copy of their parent, those removed at the outlet are not counted as lost, and
+// the split run creates and removes exactly what the one-process run does.
+TEST(Distributed, OpenChannelOnTwoProcessesMatchesOne) {
+  test::expect_parity(compare_split(test::load_case("channel2d.toml"), 2, 300));
+}
+
+// The same with the knot, its twine and the inlet and outlet of the case as written.
+TEST(Distributed, CoupledNetWithInletAndOutletOnTwoProcessesMatchesOne) {
+  test::expect_parity(compare_split(test::load_case("net_tethered_knot.toml"), 2, 40));
+}
+
+TEST(Distributed, SlabsBalanceParticlesAndOwnEveryPositionOnce) {
+  SlabPartition s;
+  s.axis = 0;
+  s.cuts = {0.0, 1.0, 2.5, 4.0};
+  s.halo = 0.3;
+  s.periodic = true;
+  EXPECT_EQ(s.owner_of({0.5, 0, 0}), 0);
+  EXPECT_EQ(s.owner_of({1.0, 0, 0}), 1);                   // a cut belongs to the slab above it
+  EXPECT_EQ(s.owner_of({4.2, 0, 0}), 0);                   // wrapped round the period
+  EXPECT_EQ(s.owner_of({-0.1, 0, 0}), 2);                  // wrapped
+  EXPECT_NEAR(s.distance_to(0, {3.9, 0, 0}), 0.1, 1e-12);  // through the period
+  EXPECT_EQ(s.halo_neighbours(1), (std::vector<int>{0, 2}));
+  s.periodic = false;
+  EXPECT_EQ(s.owner_of({-0.1, 0, 0}), 0);  // clamped
+  EXPECT_EQ(s.owner_of({9.0, 0, 0}), 2);
+  EXPECT_NEAR(s.distance_to(0, {3.9, 0, 0}), 2.9, 1e-12);
+  EXPECT_EQ(s.halo_neighbours(0), (std::vector<int>{1}));
+}
+
+}  // namespace
+}  // namespace netsph
