@@ -1,6 +1,7 @@
 #include "netsph/distributed/distributed_simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -50,11 +51,16 @@ DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& 
   diag_ = sim.diagnostics();
   sim.set_partition(this);
   exchange_.distribute(sim.particles());
+  std::vector<double> held = {static_cast<double>(sim.particles().size()),
+                              static_cast<double>(exchange_.owned_count())};
+  coll_.sum(held);
   if (coll_.rank() == 0) {
     std::string cuts;
     for (double c : slabs_.cuts) cuts += fmt::format("{}{:.4g}", cuts.empty() ? "" : ", ", c);
     spdlog::info("distributed over {} processes: slabs along {} cut at {} m, halo {:.4g} m",
                  coll_.size(), "xyz"[slabs_.axis], cuts, slabs_.halo);
+    spdlog::info("halo: {:.0f} copies, {:.1f}% of the case's particles", held[0] - held[1],
+                 100 * (held[0] - held[1]) / std::max(held[1], 1.0));
     for (int r = 0; r < slabs_.ranks(); ++r) {
       if (slabs_.cuts[r + 1] - slabs_.cuts[r] < slabs_.halo) {
         spdlog::warn(
@@ -72,12 +78,15 @@ DistributedSimulation::~DistributedSimulation() = default;
 void DistributedSimulation::step() {
   std::string message;
   bool failed = false;
+  const auto t0 = std::chrono::steady_clock::now();
   try {
     local_->step();
   } catch (const SimulationUnstable& e) {
     failed = true;
     message = e.message();
   }
+  const auto t1 = std::chrono::steady_clock::now();
+  step_seconds_ += std::chrono::duration<double>(t1 - t0).count();
   // The step's collectives all come before the checks that throw (solver/simulation.cpp), so
   // every process gets here; the first to fail speaks for all.
   const int first = coll_.min(failed ? coll_.rank() : coll_.size());
@@ -89,7 +98,32 @@ void DistributedSimulation::step() {
   }
   Simulation& sim = *local_;
   const ExchangeReport report = exchange_.exchange(sim.particles(), sim.grid());
+  exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   check_lost(report);
+}
+
+namespace {
+
+/// Adds the seconds `f` takes to `sum`.
+template <class F>
+auto timed(double& sum, F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  struct Add {
+    double& sum;
+    std::chrono::steady_clock::time_point t0;
+    ~Add() { sum += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+  } add{sum, t0};
+  return f();
+}
+
+}  // namespace
+
+double DistributedSimulation::global_max(double v) const {
+  return timed(wait_seconds_, [&] { return coll_.max(v); });
+}
+
+void DistributedSimulation::global_sum(std::span<double> v) const {
+  timed(wait_seconds_, [&] { coll_.sum(v); });
 }
 
 void DistributedSimulation::number_created(ParticleSet& p, std::size_t first,
@@ -102,7 +136,8 @@ void DistributedSimulation::number_created(ParticleSet& p, std::size_t first,
     if (exchange_.owned(parent)) parents.push_back(parent);
   Bytes mine(parents.size() * sizeof(std::uint32_t));
   if (!parents.empty()) std::memcpy(mine.data(), parents.data(), mine.size());
-  const std::vector<Bytes> received = coll_.exchange(std::vector<Bytes>(coll_.size(), mine));
+  const std::vector<Bytes> received =
+      timed(wait_seconds_, [&] { return coll_.exchange(std::vector<Bytes>(coll_.size(), mine)); });
   for (int r = 0; r < coll_.size(); ++r) {
     if (r == coll_.rank()) continue;
     const std::size_t at = parents.size();

@@ -46,6 +46,12 @@ class DistributedSimulation final : public StepPartition {
   /// Diagnostics of the whole run: lost particles counted over all processes.
   const StepDiagnostics& diagnostics() const { return diag_; }
 
+  /// Seconds this process spent on its own work in the steps, waiting in the steps'
+  /// reductions (for the slowest process: the imbalance), and in the exchanges after them.
+  double work_seconds() const { return step_seconds_ - wait_seconds_; }
+  double wait_seconds() const { return wait_seconds_; }
+  double exchange_seconds() const { return exchange_seconds_; }
+
   /// Collective: process 0 passes a Simulation of the same case, which receives every
   /// process's own particles and the run's time, bodies, nets and diagnostics; the others
   /// pass null. With `particles` false only the latter (no communication).
@@ -53,8 +59,8 @@ class DistributedSimulation final : public StepPartition {
 
   // StepPartition
   bool owns(const Vec3d& p) const override { return slabs_.owner_of(p) == coll_.rank(); }
-  double global_max(double v) const override { return coll_.max(v); }
-  void global_sum(std::span<double> v) const override { coll_.sum(v); }
+  double global_max(double v) const override;
+  void global_sum(std::span<double> v) const override;
   void number_created(ParticleSet& p, std::size_t first, const OpenBoundaryEvents& events) override;
 
  private:
@@ -69,7 +75,10 @@ class DistributedSimulation final : public StepPartition {
   std::uint64_t lost_total_ = 0;   // over all processes
   std::uint64_t total_particles_ = 0;
   std::size_t created_before_ = 0, removed_before_ = 0;  // open-boundary events, all processes
-  OpenBoundaryCounts open_base_;  // the restored run's events (every process has them)
+  OpenBoundaryCounts open_base_;
+  double step_seconds_ = 0, exchange_seconds_ = 0;
+  mutable double wait_seconds_ =
+      0;  // in the reductions the step calls  // the restored run's events (every process has them)
   std::vector<StepDiagnostics::Lost> last_lost_;
   StepDiagnostics diag_;
 };

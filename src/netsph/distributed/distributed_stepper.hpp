@@ -30,6 +30,9 @@ class DistributedStepper final : public RunStepper {
   void refresh_view(bool particles) override { sim_.gather_into(view_.get(), particles); }
   bool from_view_process(bool flag) override;
   bool any(bool flag) override { return coll_.min(flag ? 0 : 1) == 0; }
+  /// Logs each process's time on its own work, waiting for the others in the step's
+  /// reductions (the work's imbalance) and in the exchanges.
+  void finish() override;
 
   const DistributedSimulation& simulation() const { return sim_; }
 

@@ -102,13 +102,24 @@ SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
   }
   s.cuts.assign(ranks + 1, lo);
   s.cuts.back() = hi;  // the bounds coordinate() wraps into
-  std::vector<double> coord;
-  coord.reserve(particles.size());
-  for (const Vec3d& p : particles.pos) coord.push_back(std::clamp(s.coordinate(p), lo, hi));
-  std::sort(coord.begin(), coord.end());
+  // Cut at equal shares of the step's work: a fluid (or buffer) particle sums momentum,
+  // continuity and diffusion over its neighbours, a wall or body particle only its density
+  // and the viscous criterion over its fluid neighbours (kSolidWork).
+  std::vector<std::pair<double, double>> work;  // coordinate, weight
+  work.reserve(particles.size());
+  double total = 0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const double w = carries_fluid(particles.kind[i]) ? 1.0 : kSolidWork;
+    work.emplace_back(std::clamp(s.coordinate(particles.pos[i]), lo, hi), w);
+    total += w;
+  }
+  std::sort(work.begin(), work.end());
+  std::size_t k = 0;
+  double below = 0;  // work of the particles before k
   for (int r = 1; r < ranks; ++r) {
-    const double q = coord.empty() ? lo + (hi - lo) * r / ranks
-                                   : coord[coord.size() * static_cast<std::size_t>(r) / ranks];
+    while (k < work.size() && below + work[k].second <= total * r / ranks)
+      below += work[k++].second;
+    const double q = k < work.size() ? work[k].first : lo + (hi - lo) * r / ranks;
     // On a cell boundary, at least one cell from the previous cut and room for the rest.
     double cut = lo + std::round((q - lo) / cell) * cell;
     cut = std::clamp(cut, s.cuts[r - 1] + cell, hi - (ranks - r) * cell);

@@ -40,9 +40,15 @@ struct SlabPartition {
   std::vector<int> halo_neighbours(int r) const;
 };
 
-/// Slabs along the axis the particles spread furthest with equal particle counts (all kinds
-/// count alike); `halo` is left for halo_width. Throws netsph::Error naming the limit when the
-/// axis cannot hold `ranks` slabs at least one cell wide.
+/// A wall or body particle's share of a step's work relative to a fluid particle's, for
+/// balancing slabs. An estimate, checked on the 3D dam break (2.4e5 particles, 2 processes):
+/// with equal counts (1.0) the run took 148 s, with 0.3 127 s and the two processes' own work
+/// was within 2% (123.0 and 120.7 s; docs/PERFORMANCE.md, "Distributed runs").
+inline constexpr double kSolidWork = 0.3;
+
+/// Slabs along the axis the particles spread furthest with equal shares of the work (fluid
+/// particles 1, solid ones kSolidWork); `halo` is left for halo_width. Throws netsph::Error naming
+/// the limit when the axis cannot hold `ranks` slabs at least one cell wide.
 SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
                              const Vec3d& domain_min, const Vec3d& domain_max, int ranks);
 

@@ -33,6 +33,8 @@ class RunStepper {
   virtual bool from_view_process(bool flag) { return flag; }
   /// True on every process when true on any (a stop request).
   virtual bool any(bool flag) { return flag; }
+  /// At the end of the run (collective): report what only the stepper knows.
+  virtual void finish() {}
 };
 
 /// One process: the simulation is its own view.

@@ -213,6 +213,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   r.particle_steps_per_s = r.wall_s > 0 ? particle_steps / r.wall_s : 0;
   r.bytes_per_particle = stepper.bytes_per_particle();
   stepper.refresh_view(true);
+  stepper.finish();
   if (!view) return r;
   r.warnings = collect_warnings(*view);
   try {
