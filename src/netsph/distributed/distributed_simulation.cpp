@@ -38,16 +38,14 @@ DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& 
     : coll_(coll),
       local_(whole_scene(spec, resume)),
       slabs_(make_slabs(*local_, coll.size())),
-      exchange_ptr_(std::make_unique<ParticleExchange>(slabs_, coll)),
-      exchange_(*exchange_ptr_) {
+      exchange_(slabs_, coll) {
   Simulation& sim = *local_;
   initial_fluid_ = sim.initial_fluid();
-  total_particles_ = sim.particles().size();
   // A restored run's counts so far are the whole run's: every process starts from them and
   // adds only its own events.
   lost_total_ = sim.diagnostics().lost_total;
   open_base_ = sim.diagnostics().open;
-  created_before_ = open_base_.created, removed_before_ = open_base_.removed;
+  count_base_ = sim.particles().size() + open_base_.removed + lost_total_ - open_base_.created;
   diag_ = sim.diagnostics();
   sim.set_partition(this);
   exchange_.distribute(sim.particles());
@@ -104,26 +102,31 @@ void DistributedSimulation::step() {
 
 namespace {
 
-/// Adds the seconds `f` takes to `sum`.
-template <class F>
-auto timed(double& sum, F&& f) {
-  const auto t0 = std::chrono::steady_clock::now();
-  struct Add {
-    double& sum;
-    std::chrono::steady_clock::time_point t0;
-    ~Add() { sum += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
-  } add{sum, t0};
-  return f();
-}
+/// Adds the seconds from its construction to its destruction to `sum`.
+class ScopeTimer {
+ public:
+  explicit ScopeTimer(double& sum) : sum_(sum), t0_(std::chrono::steady_clock::now()) {}
+  ~ScopeTimer() {
+    sum_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  }
+  ScopeTimer(const ScopeTimer&) = delete;
+  ScopeTimer& operator=(const ScopeTimer&) = delete;
+
+ private:
+  double& sum_;
+  std::chrono::steady_clock::time_point t0_;
+};
 
 }  // namespace
 
 double DistributedSimulation::global_max(double v) const {
-  return timed(wait_seconds_, [&] { return coll_.max(v); });
+  const ScopeTimer wait(wait_seconds_);
+  return coll_.max(v);
 }
 
 void DistributedSimulation::global_sum(std::span<double> v) const {
-  timed(wait_seconds_, [&] { coll_.sum(v); });
+  const ScopeTimer wait(wait_seconds_);
+  coll_.sum(v);
 }
 
 void DistributedSimulation::number_created(ParticleSet& p, std::size_t first,
@@ -136,8 +139,11 @@ void DistributedSimulation::number_created(ParticleSet& p, std::size_t first,
     if (exchange_.owned(parent)) parents.push_back(parent);
   Bytes mine(parents.size() * sizeof(std::uint32_t));
   if (!parents.empty()) std::memcpy(mine.data(), parents.data(), mine.size());
-  const std::vector<Bytes> received =
-      timed(wait_seconds_, [&] { return coll_.exchange(std::vector<Bytes>(coll_.size(), mine)); });
+  std::vector<Bytes> received;
+  {
+    const ScopeTimer wait(wait_seconds_);
+    received = coll_.exchange(std::vector<Bytes>(coll_.size(), mine));
+  }
   for (int r = 0; r < coll_.size(); ++r) {
     if (r == coll_.rank()) continue;
     const std::size_t at = parents.size();
@@ -184,9 +190,6 @@ void DistributedSimulation::check_lost(const ExchangeReport& report) {
   diag_.open = {total(counts[1], base.entered_fluid), total(counts[2], base.created),
                 total(counts[3], base.removed), total(counts[4], base.absorbed)};
   lost_total_ += lost;
-  total_particles_ = total_particles_ - lost + (diag_.open.created - created_before_) -
-                     (diag_.open.removed - removed_before_);
-  created_before_ = diag_.open.created, removed_before_ = diag_.open.removed;
   diag_.lost_total = lost_total_;
   // The last to leave, as process 0 reports them (gathered only when some left).
   if (lost > 0) {

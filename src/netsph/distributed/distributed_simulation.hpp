@@ -40,7 +40,9 @@ class DistributedSimulation final : public StepPartition {
   Collectives& collectives() const { return coll_; }
   /// The particles of the whole run (every process knows it: the run creates none, and
   /// losses are summed after each step).
-  std::uint64_t particle_count() const { return total_particles_; }
+  std::uint64_t particle_count() const {
+    return count_base_ + diag_.open.created - diag_.open.removed - lost_total_;
+  }
   /// The particles this process owns.
   std::size_t owned_count() const { return exchange_.owned_count(); }
   /// Diagnostics of the whole run: lost particles counted over all processes.
@@ -69,12 +71,12 @@ class DistributedSimulation final : public StepPartition {
   Collectives& coll_;
   std::unique_ptr<Simulation> local_;
   SlabPartition slabs_;
-  std::unique_ptr<ParticleExchange> exchange_ptr_;
-  ParticleExchange& exchange_;
+  ParticleExchange exchange_;      // after slabs_, which it refers to
   std::size_t initial_fluid_ = 0;  // of the whole case
   std::uint64_t lost_total_ = 0;   // over all processes
-  std::uint64_t total_particles_ = 0;
-  std::size_t created_before_ = 0, removed_before_ = 0;  // open-boundary events, all processes
+  // The case's particles at the start less the events before it (restored runs), so that the
+  // run's count is this + created - removed - lost (all processes).
+  std::uint64_t count_base_ = 0;
   OpenBoundaryCounts open_base_;
   double step_seconds_ = 0, exchange_seconds_ = 0;
   mutable double wait_seconds_ =
