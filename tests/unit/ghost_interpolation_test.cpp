@@ -213,12 +213,12 @@ TEST(GhostInterpolation, TheMatrixIsAboutDiagInsideTheFluid) {
   // of the kernel), so |det| ~ 1 and the 1e-3 limit is far away.
   const auto ps = lattice(2, 20);
   const Ghost g = accumulate(2, ps, {0.1, 0, 0.1});
-  EXPECT_NEAR(g.sums.a[0][0], 1.0, 0.02);
-  EXPECT_NEAR(g.sums.a[1][1], -1.0, 0.02);
-  EXPECT_NEAR(g.sums.a[3][3], -1.0, 0.02);
+  EXPECT_NEAR(g.sums.a(0, 0), 1.0, 0.02);
+  EXPECT_NEAR(g.sums.a(1, 1), -1.0, 0.02);
+  EXPECT_NEAR(g.sums.a(3, 3), -1.0, 0.02);
   // Off-diagonal terms only from the volumes m / rho_j, which vary by ~1% over the support.
-  EXPECT_NEAR(g.sums.a[1][3], 0.0, 1e-3);
-  EXPECT_NEAR(g.sums.a[0][1], 0.0, 1e-3);
+  EXPECT_NEAR(g.sums.a(1, 3), 0.0, 1e-3);
+  EXPECT_NEAR(g.sums.a(0, 1), 0.0, 1e-3);
   EXPECT_TRUE(ghost_solve(g.sums, 2, 0.5).first_order);
 }
 

@@ -43,6 +43,10 @@ Simulation::~Simulation() = default;
 
 void Simulation::build_view(bool half_step) {
   view_.build(p_, scene_.model, grid_.origin());
+  set_view_continuity_velocity(half_step);
+}
+
+void Simulation::set_view_continuity_velocity(bool half_step) {
   // Solids under a mirror slip condition show the fluid the mirrored velocity in the viscous
   // terms (p_.vel) but their own velocity in continuity.
   bool mirrors = false;
@@ -211,6 +215,9 @@ void Simulation::apply_open_boundary_state() {
   ghost_points_.clear();
   for (std::uint32_t i = 0; i < p_.size(); ++i) {
     if (p_.kind[i] != ParticleKind::Buffer) continue;
+    // Buffer particles take their state from the fluid only (Tafuni et al. 2018): out of the
+    // view's sources while their ghost nodes sum, back in below.
+    view_.fluid[i] = 0;
     const OpenBoundaryZone& z = zones[p_.group[i]];
     if (z.velocity_imposed) p_.vel[i] = z.imposed_velocity(p_.pos[i]);
     if (z.density == BufferDensity::Reference) p_.rho[i] = eos.rho0;
@@ -222,8 +229,7 @@ void Simulation::apply_open_boundary_state() {
     }
   }
   for_each_ghost_value(
-      scene_.model, grid_, p_, ghost_points_, GhostSources::FluidOnly,
-      [&](std::size_t k, const GhostValue& g) {
+      scene_.model, grid_, view_, ghost_points_, [&](std::size_t k, const GhostValue& g) {
         if (!g.any) return;  // no fluid in reach: keep the previous state
         const std::uint32_t i = ghost_targets_[k];
         const OpenBoundaryZone& z = zones[p_.group[i]];
@@ -240,6 +246,15 @@ void Simulation::apply_open_boundary_state() {
           p_.vel[i] = Vec3f(g.vel);
         }
       });
+  const auto n = static_cast<std::int64_t>(p_.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p_.kind[i] != ParticleKind::Buffer) continue;
+    view_.fluid[i] = 1;
+    view_.rho[i] = p_.rho[i];
+    view_.press[i] = eos.pressure(p_.rho[i]);
+    view_.vx[i] = p_.vel[i].x, view_.vy[i] = p_.vel[i].y, view_.vz[i] = p_.vel[i].z;
+  }
 }
 
 void Simulation::apply_mdbc() {
@@ -255,6 +270,7 @@ void Simulation::apply_mdbc() {
         ghost_points_.push_back(p_.pos[i] + Vec3d(g));
       } else if (walls_[w].shows_own_velocity) {
         p_.vel[i] = walls_[w].start;
+        view_.vx[i] = p_.vel[i].x, view_.vy[i] = p_.vel[i].y, view_.vz[i] = p_.vel[i].z;
       }
     } else if (p_.kind[i] == ParticleKind::Body && has_ghost) {
       ghost_targets_.push_back(i);  // body ghosts are zero unless the body uses mDBC
@@ -263,9 +279,11 @@ void Simulation::apply_mdbc() {
   }
   if (ghost_targets_.empty()) return;
   std::atomic<std::size_t> fallbacks{0};
+  const TaitEos& eos = scene_.model.eos;
+  // The view holds the fluid and buffer state the ghost nodes sum (English et al. 2022 include
+  // buffer particles); the solids' entries set here are refreshed in it.
   for_each_ghost_value(
-      scene_.model, grid_, p_, ghost_points_, GhostSources::FluidAndBuffer,
-      [&](std::size_t k, const GhostValue& g) {
+      scene_.model, grid_, view_, ghost_points_, [&](std::size_t k, const GhostValue& g) {
         const std::uint32_t i = ghost_targets_[k];
         const bool wall = p_.kind[i] == ParticleKind::Wall;
         const WallSlip slip =
@@ -275,6 +293,9 @@ void Simulation::apply_mdbc() {
         const WallState s = mdbc_wall_state(g, p_.ghost[i], scene_.model.eos.rho0, slip, v_solid);
         p_.rho[i] = s.rho;
         p_.vel[i] = s.vel;
+        view_.rho[i] = s.rho;
+        view_.press[i] = eos.pressure(s.rho);
+        view_.vx[i] = s.vel.x, view_.vy[i] = s.vel.y, view_.vz[i] = s.vel.z;
       });
   diag_.mdbc_fallbacks = fallbacks.load();
 }
@@ -336,11 +357,14 @@ void Simulation::step() {
 
   update_wall_kinematics(0.0);  // velocities at t for the boundary state
   place_body_particles(false);
+  // The view first: the ghost nodes of the buffer and of mDBC read the fluid's state from it,
+  // and the particles they set are refreshed in it.
+  view_.build(p_, m, grid_.origin());
   apply_open_boundary_state();
   apply_mdbc();
+  set_view_continuity_velocity(false);
 
   const bool bodies = !scene_.bodies.empty();
-  build_view(false);
   if (partition_) {
     mark_owned();
     view_.reduce_mask = owned_.data();

@@ -164,9 +164,14 @@ class Simulation {
   void sort_particles(bool mid_step);
   /// The interaction view of the current state; `half_step` selects the walls' velocity.
   void build_view(bool half_step);
+  /// The view's continuity velocity of solids under a mirror slip condition (their own);
+  /// part of build_view, and called on its own after mDBC has set the solids' entries.
+  void set_view_continuity_velocity(bool half_step);
   double compute_dt(const RateReductions& r);
   void update_wall_kinematics(double dt);
   void apply_open_boundary_state();
+  /// The state of mDBC wall and body particles from their ghost nodes; reads the fluid's from
+  /// view_ (built before) and refreshes the solids' entries in it.
   void apply_mdbc();
   /// Positions (and, where they show it, velocities) and ghost vectors of body particles from
   /// the bodies' states; returns the largest body-particle displacement from the step start.

@@ -20,32 +20,44 @@
 
 namespace netsph {
 
+/// The sums, kept as the outer product they are: neighbour j adds weight_r * u_c with
+/// weight = (W, F dx, F dy, F dz) and u = V (1, dx, dy, dz) followed by m and V (vx, vy, vz).
+/// Columns 0-3 are the matrix above, column 4 the density's right-hand side, 5-7 the
+/// velocity components'. Four rows of eight doubles: one vector multiply-add per row and
+/// neighbour (the CPU's mDBC pass is the costliest loop of a case with many wall particles).
 struct GhostSums {
-  double a[4][4] = {};    ///< the matrix above, unknown order (f, df/dx, df/dy, df/dz)
-  double rho[4] = {};     ///< right-hand side for the density
-  double vel[3][4] = {};  ///< right-hand sides for the velocity components
+  static constexpr int kRho = 4, kVel = 5;  ///< first column of each right-hand side
+  double s[4][8] = {};
+  /// The matrix entry (r, c), unknown order (f, df/dx, df/dy, df/dz).
+  NETSPH_HD double a(int r, int c) const { return s[r][c]; }
 };
 
-/// Adds neighbour j: d = r_j - r_g, w = W(|d|), f = F(|d|), mass and state of j.
+/// What neighbour j adds to the sums: d = r_j - r_g, w = W(|d|), f = F(|d|), mass and state of j.
+struct GhostTerms {
+  double weight[4];  ///< (W, F dx, F dy, F dz)
+  double u[8];       ///< V (1, dx, dy, dz), m, V (vx, vy, vz)
+};
+
+NETSPH_HD GhostTerms ghost_terms(const Vec3f& d, Real w, Real f, Real mass, Real rho,
+                                 const Vec3f& v) {
+  const double vol = static_cast<double>(mass) / static_cast<double>(rho);
+  const double fd = f;
+  return {{static_cast<double>(w), fd * d.x, fd * d.y, fd * d.z},
+          {vol, vol * d.x, vol * d.y, vol * d.z, static_cast<double>(mass), vol * v.x, vol * v.y,
+           vol * v.z}};
+}
+
+/// s += weight (x) u.
+NETSPH_HD void ghost_add(GhostSums& s, const double (&weight)[4], const double (&u)[8]) {
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 8; ++c) s.s[r][c] += weight[r] * u[c];
+}
+
+/// Adds neighbour j (the arguments of ghost_terms).
 NETSPH_HD void ghost_accumulate(GhostSums& s, const Vec3f& d, Real w, Real f, Real mass, Real rho,
                                 const Vec3f& v) {
-  const double vol = static_cast<double>(mass) / static_cast<double>(rho);
-  const double row0[4] = {w, w * d.x, w * d.y, w * d.z};
-  const double fd[3] = {static_cast<double>(f) * d.x, static_cast<double>(f) * d.y,
-                        static_cast<double>(f) * d.z};
-  for (int c = 0; c < 4; ++c) s.a[0][c] += vol * row0[c];
-  for (int r = 0; r < 3; ++r) {
-    s.a[r + 1][0] += vol * fd[r];
-    s.a[r + 1][1] += vol * fd[r] * d.x;
-    s.a[r + 1][2] += vol * fd[r] * d.y;
-    s.a[r + 1][3] += vol * fd[r] * d.z;
-  }
-  const double weight[4] = {w, fd[0], fd[1], fd[2]};
-  const double vj[3] = {v.x, v.y, v.z};
-  for (int r = 0; r < 4; ++r) {
-    s.rho[r] += static_cast<double>(mass) * weight[r];
-    for (int c = 0; c < 3; ++c) s.vel[c][r] += vol * weight[r] * vj[c];
-  }
+  const GhostTerms t = ghost_terms(d, w, f, mass, rho, v);
+  ghost_add(s, t.weight, t.u);
 }
 
 struct GhostValue {
@@ -100,21 +112,23 @@ NETSPH_HD double solve_small(int n, double m[4][4], double rhs[4][4], int nrhs) 
 /// Density (and velocity) at the ghost node. In 2D the y row and column are dropped.
 NETSPH_HD GhostValue ghost_solve(const GhostSums& s, int dims, double det_limit = 1e-3) {
   GhostValue g;
-  const double sum_vw = s.a[0][0];
+  const double sum_vw = s.a(0, 0);
   if (!(sum_vw > 0)) return g;
   g.any = true;
   // Zeroth order first: the fallback, and the answer when the matrix is singular.
-  g.rho = s.rho[0] / sum_vw;
-  g.vel = {s.vel[0][0] / sum_vw, s.vel[1][0] / sum_vw, s.vel[2][0] / sum_vw};
+  const double* row0 = s.s[0];
+  g.rho = row0[GhostSums::kRho] / sum_vw;
+  g.vel = {row0[GhostSums::kVel] / sum_vw, row0[GhostSums::kVel + 1] / sum_vw,
+           row0[GhostSums::kVel + 2] / sum_vw};
 
   const int idx3[4] = {0, 1, 2, 3}, idx2[3] = {0, 1, 3};
   const int* idx = dims == 2 ? idx2 : idx3;
   const int n = dims == 2 ? 3 : 4;
   double m[4][4] = {}, rhs[4][4] = {};
   for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) m[r][c] = s.a[idx[r]][idx[c]];
-    rhs[0][r] = s.rho[idx[r]];
-    for (int k = 0; k < 3; ++k) rhs[k + 1][r] = s.vel[k][idx[r]];
+    for (int c = 0; c < n; ++c) m[r][c] = s.a(idx[r], idx[c]);
+    rhs[0][r] = s.s[idx[r]][GhostSums::kRho];
+    for (int k = 0; k < 3; ++k) rhs[k + 1][r] = s.s[idx[r]][GhostSums::kVel + k];
   }
   const double det = detail::solve_small(n, m, rhs, 4);
   if (!(std::fabs(det) >= det_limit)) return g;

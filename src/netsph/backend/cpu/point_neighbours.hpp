@@ -1,7 +1,7 @@
 #pragma once
-// The fluid-carrying particles within the kernel support of an arbitrary point (a ghost node,
-// a probe point), found through the cell grid: the shared loop of the ghost-node pass
-// (ghost_pass.hpp) and the probe sampling (probe_pass.hpp).
+// The fluid-carrying particles within the kernel support of an arbitrary point (a probe
+// point), found through the cell grid: the loop of the probe sampling (probe_pass.hpp), which
+// runs between steps on the particles themselves.
 #include <cmath>
 #include <cstdint>
 

@@ -209,7 +209,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
 
 /// The ghost-node sums at `point` (wrapped into periodic axes first) over the fluid and, unless
 /// `fluid_only`, buffer particles within the support (backend/cpu/ghost_pass.hpp's
-/// ghost_value_at); empty outside the grid.
+/// ghost_sums_at); empty outside the grid.
 template <class Kernel>
 NETSPH_HD GhostSums device_ghost_sums(const GridIndex& g, const std::uint32_t* cell_begin,
                                       const DeviceState& s, const FluidModel& m, const Vec3d& at,
