@@ -22,6 +22,8 @@ struct ChannelRun {
   std::size_t max_total = 0, initial_total = 0;
   std::size_t lost = 0, inflow = 0, outflow = 0;
   double worst_volume_sum = 0;  ///< max |sum V W - 1| at interior particles, final state
+  double first_bytes = 0;       ///< the arrays' bytes after the first step (all allocated)
+  double final_bytes = 0;
 };
 
 ChannelRun run_channel(const std::string& file, double x_mid0, double x_mid1, double t_settle,
@@ -35,6 +37,8 @@ ChannelRun run_channel(const std::string& file, double x_mid0, double x_mid1, do
   while (sim.time() < end) {
     sim.step();
     const ParticleSet& p = sim.particles();
+    if (r.first_bytes == 0)
+      r.first_bytes = sim.bytes_per_particle() * static_cast<double>(p.size());
     r.max_total = std::max(r.max_total, p.size());
     double u = 0;
     int n_mid = 0;
@@ -54,6 +58,7 @@ ChannelRun run_channel(const std::string& file, double x_mid0, double x_mid1, do
     }
   }
   r.mean_u = u_sum / u_samples / U;
+  r.final_bytes = sim.bytes_per_particle() * static_cast<double>(sim.particles().size());
   r.lost = sim.diagnostics().lost_total;
   r.inflow = sim.diagnostics().open.entered_fluid;
   r.outflow = sim.diagnostics().open.removed;
@@ -91,6 +96,12 @@ void expect_uniform_channel(const ChannelRun& r) {
   EXPECT_GT(r.inflow, 0u);
   EXPECT_NEAR(static_cast<double>(r.outflow) / static_cast<double>(r.inflow), 1.0, 0.05);
   EXPECT_LT(r.worst_volume_sum, 0.05);
+  // The arrays grow with the largest count by 1/16 (core/growth.hpp), not by std::vector's
+  // doubling: within 1/16, 64 elements an array and the first step's share of the count.
+  const double largest = static_cast<double>(r.max_total) / static_cast<double>(r.initial_total);
+  EXPECT_GT(largest, 1.0);  // the count did pass its start: growth was exercised
+  EXPECT_LT(r.final_bytes / r.first_bytes,
+            largest * (1.0 + 1.0 / 16) + 64.0 / static_cast<double>(r.initial_total));
 }
 
 TEST(OpenChannel, TwoDimensionalStaysUniform) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "netsph/core/growth.hpp"
+
 #include "netsph/core/error.hpp"
 
 namespace netsph {
@@ -86,7 +88,7 @@ std::size_t CellGrid::wrap(std::span<Vec3d> pos) const {
 void CellGrid::sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& order) {
   const auto n = static_cast<std::int64_t>(pos.size());
   auto& cell = scratch_.cell_of_particle;
-  cell.resize(pos.size());
+  resize_for(cell, pos.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) cell[i] = cell_of(pos[i]);
 
@@ -103,7 +105,7 @@ void CellGrid::sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& orde
     if (begin_[c + 1] > 0) occupied_.push_back(c);
     begin_[c + 1] += begin_[c];
   }
-  order.resize(kept);
+  resize_for(order, kept);
   // Use begin_ shifted by one as the running insertion cursor, then shift back.
   for (std::int64_t i = 0; i < n; ++i) {
     if (cell[i] >= 0) order[begin_[cell[i]]++] = static_cast<std::uint32_t>(i);

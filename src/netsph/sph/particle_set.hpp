@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "netsph/core/growth.hpp"
 #include "netsph/core/host_device.hpp"
 #include "netsph/core/real.hpp"
 #include "netsph/core/vec3.hpp"
@@ -49,9 +50,17 @@ struct ParticleSet {
     pos.reserve(n), vel.reserve(n), rho.reserve(n), kind.reserve(n), id.reserve(n);
     group.reserve(n), ghost.reserve(n);
   }
+  /// Room for one more particle, growing every array as core/growth.hpp does (each on its
+  /// own: the sort's gathers swap arrays with scratch buffers of other capacities).
+  void make_room() {
+    const std::size_t n = pos.size() + 1;
+    reserve_for(pos, n), reserve_for(vel, n), reserve_for(rho, n), reserve_for(kind, n);
+    reserve_for(id, n), reserve_for(group, n), reserve_for(ghost, n);
+  }
 
   std::uint32_t add(const Vec3d& p, const Vec3f& v, Real density, ParticleKind k,
                     std::uint32_t grp = 0, const Vec3f& ghost_offset = {}) {
+    make_room();
     pos.push_back(p), vel.push_back(v), rho.push_back(density), kind.push_back(k);
     group.push_back(grp), ghost.push_back(ghost_offset);
     id.push_back(next_id);
@@ -60,6 +69,7 @@ struct ParticleSet {
 
   /// Copies particle i of `o` (with its id) to the end of this set.
   void append_copy(const ParticleSet& o, std::size_t i) {
+    make_room();
     pos.push_back(o.pos[i]), vel.push_back(o.vel[i]), rho.push_back(o.rho[i]);
     kind.push_back(o.kind[i]), id.push_back(o.id[i]), group.push_back(o.group[i]);
     ghost.push_back(o.ghost[i]);
@@ -83,7 +93,7 @@ struct ParticleSet {
 /// Replaces `v` by v[order[0]], v[order[1]], ... using `scratch` (no allocation once warm).
 template <class T>
 void gather_into(std::vector<T>& v, std::span<const std::uint32_t> order, std::vector<T>& scratch) {
-  scratch.resize(order.size());
+  resize_for(scratch, order.size());
   for (std::size_t i = 0; i < order.size(); ++i) scratch[i] = v[order[i]];
   v.swap(scratch);
 }

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "netsph/core/growth.hpp"
 #include "netsph/sph/symplectic.hpp"
 
 namespace netsph {
 
 void StepStart::save(const ParticleSet& p) {
-  vel.resize(p.size()), rho.resize(p.size());
+  resize_for(vel, p.size()), resize_for(rho, p.size());
   const auto n = static_cast<std::int64_t>(p.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) vel[i] = p.vel[i], rho[i] = p.rho[i];

@@ -1,12 +1,14 @@
 #include "netsph/backend/cpu/interaction_view.hpp"
 
+#include "netsph/core/growth.hpp"
+
 namespace netsph {
 
 void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin) {
   const auto n = static_cast<std::int64_t>(p.size());
-  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &rho, &press, &fluid}) v->resize(p.size());
+  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &rho, &press, &fluid}) resize_for(*v, p.size());
   cvx.clear(), cvy.clear(), cvz.clear();
-  solid.resize(p.size());
+  resize_for(solid, p.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     x[i] = static_cast<Real>(p.pos[i].x - origin.x);
@@ -24,6 +26,7 @@ void InteractionView::build(const ParticleSet& p, const FluidModel& m, const Vec
 }
 
 void InteractionView::with_continuity_velocity() {
+  for (auto* v : {&cvx, &cvy, &cvz}) reserve_for(*v, vx.size());
   cvx = vx, cvy = vy, cvz = vz;
 }
 

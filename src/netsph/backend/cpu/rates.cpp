@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "netsph/backend/cpu/neighbour_batch.hpp"
+#include "netsph/core/growth.hpp"
 #include "netsph/sph/pair_interaction.hpp"
 
 namespace netsph {
@@ -303,9 +304,9 @@ RateReductions dispatch_diffusion(const FluidModel& m, const CellGrid& g, const 
 RateReductions compute_rates(const FluidModel& m, const CellGrid& grid, const InteractionView& v,
                              std::span<const ParticleKind> kind, std::vector<Vec3f>& acc,
                              std::vector<Real>& drho, ShiftingSums* shifting) {
-  acc.resize(v.x.size());
-  drho.resize(v.x.size());
-  if (shifting) shifting->grad_c.resize(v.x.size()), shifting->div_r.resize(v.x.size());
+  resize_for(acc, v.x.size());
+  resize_for(drho, v.x.size());
+  if (shifting) resize_for(shifting->grad_c, v.x.size()), resize_for(shifting->div_r, v.x.size());
   return with_kernel(m.kernel_type, [&](auto k) {
     using K = decltype(k);
     if (m.viscosity == ViscosityModel::Laminar)
