@@ -1,7 +1,8 @@
 // The CPU fluid pass's candidate scan (backend/cpu/neighbour_batch.hpp): every candidate within
-// the support and no other, in index order, with the r^2 the pair loop needs, and batches
-// summed exactly at the capacity; the AVX-512 scan (when the build has it) must give the same
-// batches bit for bit as the scalar one, so that the rates do not depend on the build.
+// the support and no other, in index order, with the r^2 the pair loop needs and the fields it
+// was asked to carry, and batches summed exactly at the capacity; the AVX-512 scan (when the
+// build has it) must give the same batches bit for bit as the scalar one, so that the rates do
+// not depend on the build.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -16,8 +17,9 @@ namespace {
 struct Entry {
   Real dx, dy, dz, r2;
   std::int32_t j;
+  std::vector<Real> carried;  ///< the carried fields, in CandidateScan::carry's order
   bool operator==(const Entry& o) const {
-    return dx == o.dx && dy == o.dy && dz == o.dz && r2 == o.r2 && j == o.j;
+    return dx == o.dx && dy == o.dy && dz == o.dz && r2 == o.r2 && j == o.j && carried == o.carried;
   }
 };
 
@@ -27,10 +29,27 @@ struct Delivered {
   std::vector<Entry> rest;
 };
 
-std::vector<Entry> entries(const NeighbourBatch& b, int n) {
+std::vector<Entry> entries(const NeighbourBatch& b, int n, int ncarried) {
   std::vector<Entry> e;
-  for (int k = 0; k < n; ++k) e.push_back({b.dx[k], b.dy[k], b.dz[k], b.r2[k], b.j[k]});
+  for (int k = 0; k < n; ++k) {
+    e.push_back({b.dx[k], b.dy[k], b.dz[k], b.r2[k], b.j[k], {}});
+    for (int c = 0; c < ncarried; ++c) e.back().carried.push_back(b.carried[c][k]);
+  }
   return e;
+}
+
+/// `count` fields of n random values each, and the scan's carry set to them.
+std::vector<std::vector<Real>> carry_random_fields(CandidateScan& s, int count, std::size_t n,
+                                                   unsigned seed) {
+  std::mt19937 gen(seed + 100);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  std::vector<std::vector<Real>> fields(static_cast<std::size_t>(count));
+  for (int c = 0; c < count; ++c) {
+    for (std::size_t i = 0; i < n; ++i) fields[c].push_back(u(gen));
+    s.carry[c] = fields[c].data();
+  }
+  s.ncarry = count;
+  return fields;
 }
 
 struct Cloud {
@@ -52,10 +71,10 @@ Delivered run(const CandidateScan& s, const std::vector<std::uint32_t>& cuts, Sc
   Delivered d;
   NeighbourBatch batch;
   const auto sum = [&](const NeighbourBatch& b) {
-    d.full.push_back(entries(b, NeighbourBatch::kCapacity));
+    d.full.push_back(entries(b, NeighbourBatch::kCapacity, s.ncarry));
   };
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) scan(s, cuts[k], cuts[k + 1], batch, sum);
-  d.rest = entries(batch, batch.n);
+  d.rest = entries(batch, batch.n, s.ncarry);
   return d;
 }
 
@@ -67,8 +86,8 @@ TEST(NeighbourBatch, ScalarScanKeepsExactlyTheCandidatesWithinTheSupportInOrder)
   Cloud c = cloud(2000, 3.0f, 1);
   const std::uint32_t self = 417;  // at the centre: the ball lies inside the cloud
   c.x[self] = c.y[self] = c.z[self] = 0;
-  const CandidateScan s{c.x[self],  c.y[self],  c.z[self], c.x.data(),
-                        c.y.data(), c.z.data(), self,      1.0f};
+  CandidateScan s{c.x[self], c.y[self], c.z[self], c.x.data(), c.y.data(), c.z.data(), self, 1.0f};
+  const auto fields = carry_random_fields(s, 3, 2000, 1);
   const std::vector<std::uint32_t> cuts{0, 13, 13, 250, 417, 418, 1999, 2000};
   const Delivered d = run(s, cuts, scalar);
   std::vector<Entry> all;
@@ -79,7 +98,12 @@ TEST(NeighbourBatch, ScalarScanKeepsExactlyTheCandidatesWithinTheSupportInOrder)
     const Real dx = s.xs - c.x[b], dy = s.ys - c.y[b], dz = s.zs - c.z[b];
     const Real r2 = offset_r2(dx, dy, dz);
     if (b != self && r2 < s.support2)
-      expected.push_back({dx, dy, dz, r2, static_cast<std::int32_t>(b)});
+      expected.push_back({dx,
+                          dy,
+                          dz,
+                          r2,
+                          static_cast<std::int32_t>(b),
+                          {fields[0][b], fields[1][b], fields[2][b]}});
   }
   // A ball of radius 1 in a cube of side 3 holds about 15% of 2000 candidates: full batches
   // and a partial one.
@@ -145,6 +169,9 @@ TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
     std::vector<Real> flag(700);
     for (std::size_t k = 0; k < flag.size(); ++k) flag[k] = (k * 7 + seed) % 3 ? Real(1) : Real(0);
     if (seed % 3 == 0) s.require = flag.data();
+    // Carried fields: none, a few, or as many as a batch holds.
+    const auto fields =
+        carry_random_fields(s, static_cast<int>(seed % 4 * 3), 700, seed);  // 0, 3, 6, 9
     const Delivered a = run(s, cuts, scalar);
     const Delivered b = run(s, cuts, vector);
     ASSERT_EQ(a.full.size(), b.full.size()) << "seed " << seed;

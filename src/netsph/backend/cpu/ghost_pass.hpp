@@ -41,15 +41,20 @@ GhostSums ghost_sums_at(const FluidModel& m, const CellGrid& grid, const Interac
   const Vec3d& o = grid.origin();
   // A ghost node is no particle: no candidate is excluded as "itself".
   constexpr std::uint32_t kNoParticle = std::numeric_limits<std::uint32_t>::max();
-  const CandidateScan scan{static_cast<Real>(x.x - o.x),
-                           static_cast<Real>(x.y - o.y),
-                           static_cast<Real>(x.z - o.z),
-                           v.x.data(),
-                           v.y.data(),
-                           v.z.data(),
-                           kNoParticle,
-                           m.support2,
-                           v.fluid.data()};
+  CandidateScan scan{static_cast<Real>(x.x - o.x),
+                     static_cast<Real>(x.y - o.y),
+                     static_cast<Real>(x.z - o.z),
+                     v.x.data(),
+                     v.y.data(),
+                     v.z.data(),
+                     kNoParticle,
+                     m.support2,
+                     v.fluid.data()};
+  // The sources' density and velocity come along with each neighbour (no gathers below).
+  enum { kRho, kVx, kVy, kVz };
+  scan.ncarry = 4;
+  scan.carry[kRho] = v.rho.data();
+  scan.carry[kVx] = v.vx.data(), scan.carry[kVy] = v.vy.data(), scan.carry[kVz] = v.vz.data();
   const KernelScale ks = m.kernel;
   scan_ranges(scan, ranges, nranges, [&](const NeighbourBatch& b, int n) {
     // The terms of the whole batch in vector lanes first, then their sum: four broadcast
@@ -59,11 +64,11 @@ GhostSums ghost_sums_at(const FluidModel& m, const CellGrid& grid, const Interac
 #pragma omp simd
     for (int k = 0; k < n; ++k) {
       const Real r = std::sqrt(b.r2[k]);
-      const std::int32_t j = b.j[k];
       // The batch holds point - neighbour; the interpolation takes neighbour - point.
-      const GhostTerms t = ghost_terms(
-          Vec3f(-b.dx[k], -b.dy[k], -b.dz[k]), kernel_value<Kernel>(ks, r),
-          kernel_grad_factor<Kernel>(ks, r), m.mass, v.rho[j], Vec3f(v.vx[j], v.vy[j], v.vz[j]));
+      const GhostTerms t =
+          ghost_terms(Vec3f(-b.dx[k], -b.dy[k], -b.dz[k]), kernel_value<Kernel>(ks, r),
+                      kernel_grad_factor<Kernel>(ks, r), m.mass, b.carried[kRho][k],
+                      Vec3f(b.carried[kVx][k], b.carried[kVy][k], b.carried[kVz][k]));
       for (int q = 0; q < 4; ++q) weight[k][q] = t.weight[q];
       for (int q = 0; q < 8; ++q) u[k][q] = t.u[q];
     }

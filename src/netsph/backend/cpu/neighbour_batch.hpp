@@ -1,9 +1,9 @@
 #pragma once
 // The candidate scan of the CPU interaction passes (rates.cpp): the neighbours of particle a
 // within the support among one range of sorted candidates (for wall and body particles, the
-// fluid ones only), appended in index order to a batch of offsets, squared distances and
-// indices. The pair loop then runs over the batch in full vector lanes (docs/PERFORMANCE.md,
-// "Where the time goes").
+// fluid ones only), appended in index order to a batch of offsets, squared distances, indices
+// and the fields the pass asked to carry. The pair loop then runs over the batch in full vector
+// lanes with contiguous loads (docs/PERFORMANCE.md, "Where the time goes").
 //
 // With AVX-512 the scan tests 16 candidates at a time and compacts the hits with vcompressps
 // into registers, stored whole (the batch has 16 entries of slack for the lanes past the hits);
@@ -24,20 +24,25 @@ namespace netsph {
 struct NeighbourBatch {
   static constexpr int kCapacity = 128;  ///< neighbours summed at a time
   static constexpr int kSlack = 16;      ///< room for a whole vector store past the last hit
+  static constexpr int kMaxCarried = 9;  ///< fields a scan can copy along (CandidateScan::carry)
   alignas(64) Real dx[kCapacity + kSlack];
   alignas(64) Real dy[kCapacity + kSlack];
   alignas(64) Real dz[kCapacity + kSlack];
   alignas(64) Real r2[kCapacity + kSlack];
   alignas(64) std::int32_t j[kCapacity + kSlack];
+  /// The neighbours' fields the scan was asked to carry, in the order of CandidateScan::carry.
+  alignas(64) Real carried[kMaxCarried][kCapacity + kSlack];
   int n = 0;
 
-  /// After sum(batch) has taken the first kCapacity entries: moves the rest to the front.
-  void drop_full_batch() {
+  /// After sum(batch) has taken the first kCapacity entries: moves the rest to the front
+  /// (with the first `ncarried` carried fields).
+  void drop_full_batch(int ncarried) {
     const int rest = n - kCapacity;
     const auto bytes = static_cast<std::size_t>(rest) * sizeof(Real);
     std::memmove(dx, dx + kCapacity, bytes), std::memmove(dy, dy + kCapacity, bytes);
     std::memmove(dz, dz + kCapacity, bytes), std::memmove(r2, r2 + kCapacity, bytes);
     std::memmove(j, j + kCapacity, static_cast<std::size_t>(rest) * sizeof(std::int32_t));
+    for (int c = 0; c < ncarried; ++c) std::memmove(carried[c], carried[c] + kCapacity, bytes);
     n = rest;
   }
 };
@@ -54,6 +59,12 @@ struct CandidateScan {
   /// When set, only candidates b with require[b] > 0 are neighbours (walls and bodies take
   /// fluid neighbours only: the view's fluid flag).
   const Real* require = nullptr;
+  /// Fields of the candidates copied into the batch with each neighbour (carried[c][k] =
+  /// carry[c][j[k]]): the AVX-512 scan loads them whole for 16 candidates and compresses them
+  /// as it does the offsets, so the sums read them contiguously instead of gathering each
+  /// neighbour's (a gather per field per 16 neighbours was the pair loop's largest cost).
+  const Real* carry[NeighbourBatch::kMaxCarried] = {};
+  int ncarry = 0;
 };
 
 /// r^2 of an offset, contracted as GCC 12 contracts the expression dx*dx + dy*dy + dz*dz with
@@ -79,9 +90,10 @@ inline void scan_range_scalar(const CandidateScan& s, std::uint32_t b0, std::uin
       const int q = batch.n++;
       batch.dx[q] = dx, batch.dy[q] = dy, batch.dz[q] = dz, batch.r2[q] = r2;
       batch.j[q] = static_cast<std::int32_t>(b);
+      for (int c = 0; c < s.ncarry; ++c) batch.carried[c][q] = s.carry[c][b];
       if (batch.n == NeighbourBatch::kCapacity) {
         sum(batch);
-        batch.drop_full_batch();
+        batch.drop_full_batch(s.ncarry);
       }
     }
   }
@@ -118,10 +130,14 @@ inline void scan_range_avx512(const CandidateScan& s, std::uint32_t b0, std::uin
     _mm512_storeu_ps(batch.r2 + q, _mm512_maskz_compress_ps(hit, r2));
     const __m512i idx = _mm512_add_epi32(_mm512_set1_epi32(static_cast<int>(b)), lane);
     _mm512_storeu_si512(batch.j + q, _mm512_maskz_compress_epi32(hit, idx));
+    for (int c = 0; c < s.ncarry; ++c) {
+      const __m512 field = _mm512_maskz_loadu_ps(hit, s.carry[c] + b);
+      _mm512_storeu_ps(batch.carried[c] + q, _mm512_maskz_compress_ps(hit, field));
+    }
     batch.n = q + __builtin_popcount(hit);
     if (batch.n >= NeighbourBatch::kCapacity) {
       sum(batch);
-      batch.drop_full_batch();
+      batch.drop_full_batch(s.ncarry);
     }
   }
 }

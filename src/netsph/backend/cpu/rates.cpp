@@ -17,8 +17,31 @@ struct FluidResult {
   Real div_r = 0;
 };
 
+/// The neighbours' fields the scans carry into their batches (CandidateScan::carry), in this
+/// order: walls and bodies take the first five, the fluid pass the fluid flag too, and the
+/// continuity velocity when it has arrays of its own.
+enum Carried { kVx, kVy, kVz, kRho, kPress, kFluid, kCvx, kCvy, kCvz };
+
+inline void carry_fields(const InteractionView& v, int count, CandidateScan& scan) {
+  const Real* fields[] = {v.vx.data(),       v.vy.data(),       v.vz.data(),
+                          v.rho.data(),      v.press.data(),    v.fluid.data(),
+                          v.continuity_vx(), v.continuity_vy(), v.continuity_vz()};
+  scan.ncarry = count;
+  for (int c = 0; c < count; ++c) scan.carry[c] = fields[c];
+}
+
+/// The solids' passes: the neighbours' velocity, density and pressure.
+inline void carry_solid_fields(const InteractionView& v, CandidateScan& scan) {
+  carry_fields(v, kPress + 1, scan);
+}
+
+/// The fluid pass: also the fluid flag, and the continuity velocity where it differs.
+inline void carry_fluid_fields(const InteractionView& v, CandidateScan& scan) {
+  carry_fields(v, v.has_continuity_velocity() ? kCvz + 1 : kFluid + 1, scan);
+}
+
 /// The pair sums of fluid particle a over the first n neighbours of a batch (omp simd: the
-/// body is branch-free and reads the neighbours' fields by gather).
+/// body is branch-free and reads the neighbours' fields the scan carried, contiguously).
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 inline FluidResult fluid_batch_sums(const FluidModel& model, const InteractionView& v,
                                     std::uint32_t a, const NeighbourBatch& batch, int n) {
@@ -27,41 +50,40 @@ inline FluidResult fluid_batch_sums(const FluidModel& model, const InteractionVi
   const FluidModel m = model;
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
   const Real rho_a = v.rho[a], press_a = v.press[a];
-  const Real* __restrict vx = v.vx.data();
-  const Real* __restrict vy = v.vy.data();
-  const Real* __restrict vz = v.vz.data();
+  const Real* __restrict vx = batch.carried[kVx];
+  const Real* __restrict vy = batch.carried[kVy];
+  const Real* __restrict vz = batch.carried[kVz];
   // Read only, so restrict holds even when these alias vx, vy, vz (no mirrored solid).
-  const Real* __restrict cvx = v.continuity_vx();
-  const Real* __restrict cvy = v.continuity_vy();
-  const Real* __restrict cvz = v.continuity_vz();
-  const Real* __restrict rho = v.rho.data();
-  const Real* __restrict press = v.press.data();
-  const Real* __restrict fluid = v.fluid.data();
+  const bool own_cv = v.has_continuity_velocity();
+  const Real* __restrict cvx = batch.carried[own_cv ? kCvx : kVx];
+  const Real* __restrict cvy = batch.carried[own_cv ? kCvy : kVy];
+  const Real* __restrict cvz = batch.carried[own_cv ? kCvz : kVz];
+  const Real* __restrict rho = batch.carried[kRho];
+  const Real* __restrict press = batch.carried[kPress];
+  const Real* __restrict fluid = batch.carried[kFluid];
   const Real* __restrict bdx = batch.dx;
   const Real* __restrict bdy = batch.dy;
   const Real* __restrict bdz = batch.dz;
   const Real* __restrict br2 = batch.r2;
-  const std::int32_t* __restrict bj = batch.j;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
   Real gx = 0, gy = 0, gz = 0, div = 0;
 #pragma omp simd reduction(+ : ax, ay, az, dr, gx, gy, gz, div) reduction(max : vdt)
   for (int k = 0; k < n; ++k) {
-    const std::int32_t b = bj[k];
     const Real dx = bdx[k], dy = bdy[k], dz = bdz[k], r2 = br2[k];
     const Neighbour nb{{dx, dy, dz},
                        r2,
-                       {vxa - vx[b], vya - vy[b], vza - vz[b]},
-                       {vxa - cvx[b], vya - cvy[b], vza - cvz[b]},
-                       rho[b],
-                       press[b],
+                       {vxa - vx[k], vya - vy[k], vza - vz[k]},
+                       {vxa - cvx[k], vya - cvy[k], vza - cvz[k]},
+                       rho[k],
+                       press[k],
                        m.mass,
-                       fluid[b]};
+                       fluid[k]};
     const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
     ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
     vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
     if constexpr (Shift) {
       // grad_a W = F r_ab; V_b = m / rho_b (Lind et al. 2012).
-      const Real vf = m.mass / rho[b] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
+      const Real vf = m.mass / rho[k] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
       gx += vf * dx, gy += vf * dy, gz += vf * dz;
       div -= vf * r2;
     }
@@ -94,16 +116,13 @@ inline FluidResult fluid_sums(const FluidModel& m, const InteractionView& v, std
     accumulate(out,
                fluid_batch_sums<Kernel, Visc, Diff, Shift>(m, v, a, b, NeighbourBatch::kCapacity));
   };
+  CandidateScan scan{0, 0, 0, v.x.data(), v.y.data(), v.z.data(), a, m.support2};
+  carry_fluid_fields(v, scan);
   for (int k = 0; k < nranges; ++k) {
     // The neighbour's position is x[b] + shift: shifting a instead keeps the loop body plain.
-    const CandidateScan scan{v.x[a] - ranges[k].shift.x,
-                             v.y[a] - ranges[k].shift.y,
-                             v.z[a] - ranges[k].shift.z,
-                             v.x.data(),
-                             v.y.data(),
-                             v.z.data(),
-                             a,
-                             m.support2};
+    scan.xs = v.x[a] - ranges[k].shift.x;
+    scan.ys = v.y[a] - ranges[k].shift.y;
+    scan.zs = v.z[a] - ranges[k].shift.z;
     scan_range(scan, ranges[k].begin, ranges[k].end, batch, sum_full);
   }
   if (batch.n > 0)
@@ -122,22 +141,20 @@ inline RateSums wall_batch_sums(const FluidModel& model, const InteractionView& 
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
   // the solid's own velocity
   const Real cxa = v.continuity_vx()[a], cya = v.continuity_vy()[a], cza = v.continuity_vz()[a];
-  const Real* __restrict vx = v.vx.data();
-  const Real* __restrict vy = v.vy.data();
-  const Real* __restrict vz = v.vz.data();
-  const Real* __restrict rho = v.rho.data();
-  const Real* __restrict press = v.press.data();
-  const std::int32_t* __restrict bj = batch.j;
+  const Real* __restrict vx = batch.carried[kVx];
+  const Real* __restrict vy = batch.carried[kVy];
+  const Real* __restrict vz = batch.carried[kVz];
+  const Real* __restrict rho = batch.carried[kRho];
+  const Real* __restrict press = batch.carried[kPress];
   Real dr = 0, vdt = 0;
 #pragma omp simd reduction(+ : dr) reduction(max : vdt)
   for (int k = 0; k < n; ++k) {
-    const std::int32_t b = bj[k];
     const Neighbour nb{{batch.dx[k], batch.dy[k], batch.dz[k]},
                        batch.r2[k],
-                       {vxa - vx[b], vya - vy[b], vza - vz[b]},
-                       {cxa - vx[b], cya - vy[b], cza - vz[b]},
-                       rho[b],
-                       press[b],
+                       {vxa - vx[k], vya - vy[k], vza - vz[k]},
+                       {cxa - vx[k], cya - vy[k], cza - vz[k]},
+                       rho[k],
+                       press[k],
                        m.mass,
                        Real(1)};
     const PairRates s = boundary_pair_rates<Kernel>(m, nb);
@@ -152,8 +169,9 @@ template <class Kernel>
 inline RateSums wall_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
                           const NeighbourRanges& ranges, int nranges) {
   RateSums out;
-  const CandidateScan scan{v.x[a],     v.y[a], v.z[a],     v.x.data(),    v.y.data(),
-                           v.z.data(), a,      m.support2, v.fluid.data()};
+  CandidateScan scan{v.x[a],     v.y[a], v.z[a],     v.x.data(),    v.y.data(),
+                     v.z.data(), a,      m.support2, v.fluid.data()};
+  carry_solid_fields(v, scan);
   scan_ranges(scan, ranges, nranges, [&](const NeighbourBatch& b, int n) {
     const RateSums s = wall_batch_sums<Kernel>(m, v, a, b, n);
     out.drho += s.drho;
@@ -181,22 +199,20 @@ inline RateSums body_batch_sums(const FluidModel& model, const InteractionView& 
   const Real cxa = v.continuity_vx()[a], cya = v.continuity_vy()[a], cza = v.continuity_vz()[a];
   const Real p_bg = m.eos.p_background;
   const Real rho_a = v.rho[a], press_a = v.press[a] - p_bg;
-  const Real* __restrict vx = v.vx.data();
-  const Real* __restrict vy = v.vy.data();
-  const Real* __restrict vz = v.vz.data();
-  const Real* __restrict rho = v.rho.data();
-  const Real* __restrict press = v.press.data();
-  const std::int32_t* __restrict bj = batch.j;
+  const Real* __restrict vx = batch.carried[kVx];
+  const Real* __restrict vy = batch.carried[kVy];
+  const Real* __restrict vz = batch.carried[kVz];
+  const Real* __restrict rho = batch.carried[kRho];
+  const Real* __restrict press = batch.carried[kPress];
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0;
 #pragma omp simd reduction(+ : ax, ay, az, dr) reduction(max : vdt)
   for (int k = 0; k < n; ++k) {
-    const std::int32_t b = bj[k];
     const Neighbour nb{{batch.dx[k], batch.dy[k], batch.dz[k]},
                        batch.r2[k],
-                       {vxa - vx[b], vya - vy[b], vza - vz[b]},
-                       {cxa - vx[b], cya - vy[b], cza - vz[b]},
-                       rho[b],
-                       press[b] - p_bg,
+                       {vxa - vx[k], vya - vy[k], vza - vz[k]},
+                       {cxa - vx[k], cya - vy[k], cza - vz[k]},
+                       rho[k],
+                       press[k] - p_bg,
                        m.mass,
                        Real(1)};
     const PairRates s =
@@ -211,8 +227,9 @@ template <class Kernel, ViscosityModel Visc>
 inline RateSums body_sums(const FluidModel& m, const InteractionView& v, std::uint32_t a,
                           const NeighbourRanges& ranges, int nranges) {
   RateSums out;
-  const CandidateScan scan{v.x[a],     v.y[a], v.z[a],     v.x.data(),    v.y.data(),
-                           v.z.data(), a,      m.support2, v.fluid.data()};
+  CandidateScan scan{v.x[a],     v.y[a], v.z[a],     v.x.data(),    v.y.data(),
+                     v.z.data(), a,      m.support2, v.fluid.data()};
+  carry_solid_fields(v, scan);
   scan_ranges(scan, ranges, nranges, [&](const NeighbourBatch& b, int n) {
     const RateSums s = body_batch_sums<Kernel, Visc>(m, v, a, b, n);
     out.acc += s.acc;
