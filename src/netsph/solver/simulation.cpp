@@ -251,9 +251,7 @@ void Simulation::apply_open_boundary_state() {
   for (std::int64_t i = 0; i < n; ++i) {
     if (p_.kind[i] != ParticleKind::Buffer) continue;
     view_.fluid[i] = 1;
-    view_.rho[i] = p_.rho[i];
-    view_.press[i] = eos.pressure(p_.rho[i]);
-    view_.vx[i] = p_.vel[i].x, view_.vy[i] = p_.vel[i].y, view_.vz[i] = p_.vel[i].z;
+    view_.refresh_state(static_cast<std::size_t>(i), p_, scene_.model);
   }
 }
 
@@ -270,7 +268,7 @@ void Simulation::apply_mdbc() {
         ghost_points_.push_back(p_.pos[i] + Vec3d(g));
       } else if (walls_[w].shows_own_velocity) {
         p_.vel[i] = walls_[w].start;
-        view_.vx[i] = p_.vel[i].x, view_.vy[i] = p_.vel[i].y, view_.vz[i] = p_.vel[i].z;
+        view_.refresh_state(i, p_, scene_.model);
       }
     } else if (p_.kind[i] == ParticleKind::Body && has_ghost) {
       ghost_targets_.push_back(i);  // body ghosts are zero unless the body uses mDBC
@@ -279,7 +277,6 @@ void Simulation::apply_mdbc() {
   }
   if (ghost_targets_.empty()) return;
   std::atomic<std::size_t> fallbacks{0};
-  const TaitEos& eos = scene_.model.eos;
   // The view holds the fluid and buffer state the ghost nodes sum (English et al. 2022 include
   // buffer particles); the solids' entries set here are refreshed in it.
   for_each_ghost_value(
@@ -293,9 +290,7 @@ void Simulation::apply_mdbc() {
         const WallState s = mdbc_wall_state(g, p_.ghost[i], scene_.model.eos.rho0, slip, v_solid);
         p_.rho[i] = s.rho;
         p_.vel[i] = s.vel;
-        view_.rho[i] = s.rho;
-        view_.press[i] = eos.pressure(s.rho);
-        view_.vx[i] = s.vel.x, view_.vy[i] = s.vel.y, view_.vz[i] = s.vel.z;
+        view_.refresh_state(i, p_, scene_.model);
       });
   diag_.mdbc_fallbacks = fallbacks.load();
 }

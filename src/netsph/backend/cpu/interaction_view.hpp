@@ -34,6 +34,13 @@ struct InteractionView {
   /// Copies the particles. The continuity velocity is the velocity (no separate arrays)
   /// until with_continuity_velocity().
   void build(const ParticleSet& p, const FluidModel& m, const Vec3d& origin);
+  /// Copies particle i's density, pressure and velocity again after the boundary state has
+  /// set them in `p` (positions, flags and continuity velocity untouched).
+  void refresh_state(std::size_t i, const ParticleSet& p, const FluidModel& m) {
+    rho[i] = p.rho[i];
+    press[i] = m.eos.pressure(p.rho[i]);
+    vx[i] = p.vel[i].x, vy[i] = p.vel[i].y, vz[i] = p.vel[i].z;
+  }
   /// Gives the continuity velocity its own arrays, equal to the velocity; the caller then sets
   /// solids' own velocities where they differ (set_continuity_velocity).
   void with_continuity_velocity();
