@@ -77,10 +77,9 @@ class DistributedSimulation final : public StepPartition {
   // The case's particles at the start less the events before it (restored runs), so that the
   // run's count is this + created - removed - lost (all processes).
   std::uint64_t count_base_ = 0;
-  OpenBoundaryCounts open_base_;
+  OpenBoundaryCounts open_base_;  // the restored run's events (every process has them)
   double step_seconds_ = 0, exchange_seconds_ = 0;
-  mutable double wait_seconds_ =
-      0;  // in the reductions the step calls  // the restored run's events (every process has them)
+  mutable double wait_seconds_ = 0;  // in the reductions the step calls
   std::vector<StepDiagnostics::Lost> last_lost_;
   StepDiagnostics diag_;
 };
