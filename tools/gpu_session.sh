@@ -25,10 +25,10 @@ run() {  # run LIMIT NAME COMMAND...: the command's output in r/NAME.log
   echo "   exit $?" | tee -a "$out/r/index.txt"
 }
 run 90 parity .gpu/device_parity_test --gtest_filter='DeviceParity.Cuda*'
-run 130 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --profile \
+run 150 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --profile \
   --json "$out/r/bench.json"
 run 240 bi2014_full .gpu/netsph check builtin:paper/net_bi2014 --backend cuda --sample-steps 10
-run 90 float3d .gpu/netsph run builtin:floating_box3d --backend cuda --set simulation.dp=0.01 \
+run 80 float3d .gpu/netsph run builtin:floating_box3d --backend cuda --set simulation.dp=0.01 \
   --no-plots --plain-progress -o "$out/float3d"
 for d in "$out"/float3d; do
   [ -d "$d" ] && cp "$d/summary.json" "$out/r/$(basename "$d")_summary.json" 2>/dev/null

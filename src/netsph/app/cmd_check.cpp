@@ -23,8 +23,9 @@ int check_command(const CheckArgs& args) {
     return 0;
   }
   const std::string backend = resolve_backend(args.backend);
+  const auto built = std::chrono::steady_clock::now();
   Simulation sim(spec, step_backend(backend));
-  log_scene(sim);
+  log_scene(sim, std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());
 
   // A short timing sample: the first step also sizes every work array, so memory is known.
   const auto t0 = std::chrono::steady_clock::now();

@@ -1,3 +1,4 @@
+#include <chrono>
 #include <csignal>
 #include <memory>
 #include <optional>
@@ -150,6 +151,7 @@ int run_command(const RunArgs& args) {
                std::filesystem::absolute(out).string());
   std::unique_ptr<Simulation> sim;
   std::unique_ptr<RunStepper> stepper;
+  const auto built = std::chrono::steady_clock::now();
   if (coll) {
     stepper = std::make_unique<DistributedStepper>(spec, *coll, restart ? &checkpoint : nullptr);
   } else {
@@ -157,7 +159,10 @@ int run_command(const RunArgs& args) {
     if (restart) sim->restore_state(checkpoint);
     stepper = std::make_unique<SingleStepper>(*sim);
   }
-  if (reporting) log_scene(*stepper->view());
+  if (reporting) {
+    log_scene(*stepper->view(),
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());
+  }
   if (restart) {
     spdlog::info("restarting from {} at t = {:.6g} s (step {}), to end_time = {:.6g} s",
                  checkpoint_path(out).string(), stepper->time(), stepper->steps(),

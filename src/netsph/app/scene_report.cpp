@@ -1,10 +1,15 @@
 #include "netsph/app/scene_report.hpp"
 
+#include <algorithm>
+#include <string>
+#include <unordered_set>
+
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 namespace netsph::app {
 
-void log_scene(const Simulation& sim) {
+void log_scene(const Simulation& sim, double setup_seconds) {
   const Scene& s = sim.scene();
   const FluidModel& m = sim.model();
   const CaseSpec& spec = sim.spec();
@@ -13,18 +18,43 @@ void log_scene(const Simulation& sim) {
                m.dims, spec.simulation.dp, static_cast<double>(m.kernel.h),
                m.kernel_type == KernelType::Wendland ? "Wendland" : "cubic spline", s.sound_speed,
                static_cast<double>(m.eos.rho0));
-  spdlog::info("particles: {} fluid, {} wall, {} body, {} open-boundary buffer, {} total",
+  spdlog::info("particles: {} fluid, {} wall, {} body, {} open-boundary buffer, {} total{}",
                p.count(ParticleKind::Fluid), p.count(ParticleKind::Wall),
-               p.count(ParticleKind::Body), p.count(ParticleKind::Buffer), p.size());
-  for (const auto& b : s.bodies) {
+               p.count(ParticleKind::Body), p.count(ParticleKind::Buffer), p.size(),
+               setup_seconds >= 0 ? fmt::format(" (set up in {:.1f} s)", setup_seconds) : "");
+  const char* unit = m.dims == 2 ? "/m" : "";
+  // A net's knots are bodies too (hundreds of them): one line per net instead of one per knot.
+  std::vector<char> knot(s.bodies.size(), 0);
+  for (const CoupledNet& net : sim.nets()) {
+    const std::size_t n = net.model.knots.size();
+    std::uint32_t fewest = ~0u, most = 0;
+    double mass = 0;
+    for (std::size_t k = net.first_body; k < net.first_body + n && k < s.bodies.size(); ++k) {
+      knot[k] = 1;
+      fewest = std::min(fewest, s.bodies[k].count);
+      most = std::max(most, s.bodies[k].count);
+      mass += s.bodies[k].inertia.mass;
+    }
+    spdlog::info("  net {:<13} {:>9} knot bodies of {} particles, mass {:.4g} kg{} in all",
+                 net.model.name, n,
+                 fewest == most ? fmt::format("{}", most) : fmt::format("{}-{}", fewest, most),
+                 mass, unit);
+  }
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
+    if (knot[k]) continue;
+    const RigidBody& b = s.bodies[k];
     spdlog::info("  body {:<12} {:>9} particles, {} , mass {:.4g} kg{}", b.name, b.count,
                  b.motion == BodyMotion::Fixed
                      ? "fixed"
                      : (b.motion == BodyMotion::Floating ? "floating" : "prescribed"),
-                 b.inertia.mass, m.dims == 2 ? "/m" : "");
+                 b.inertia.mass, unit);
   }
+  // The bodies' sources are listed above.
+  std::unordered_set<std::string> bodies;
+  for (const RigidBody& b : s.bodies) bodies.insert(b.name);
   for (const auto& src : s.sources)
-    spdlog::info("  {:<16} {:>10} particles", src.name, src.particles);
+    if (!bodies.contains(src.name))
+      spdlog::info("  {:<16} {:>10} particles", src.name, src.particles);
   spdlog::info("domain [{:.4g}, {:.4g}, {:.4g}] .. [{:.4g}, {:.4g}, {:.4g}] m{}", s.domain_min.x,
                s.domain_min.y, s.domain_min.z, s.domain_max.x, s.domain_max.y, s.domain_max.z,
                spec.domain.given ? "" : " (default: particles' bounding box + margin)");

@@ -5,6 +5,7 @@
 
 namespace netsph::app {
 
-void log_scene(const Simulation& sim);
+/// setup_seconds: how long the case took to build (not shown when negative).
+void log_scene(const Simulation& sim, double setup_seconds = -1);
 
 }  // namespace netsph::app

@@ -6,6 +6,7 @@
 
 #include "netsph/core/error.hpp"
 #include "netsph/geometry/body_particles.hpp"
+#include "netsph/geometry/box_bins.hpp"
 #include "netsph/geometry/shapes.hpp"
 #include "netsph/solver/scene.hpp"
 
@@ -89,6 +90,7 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
     body.count = static_cast<std::uint32_t>(local.size());
     body.offsets.reserve(local.size());
     body.ghosts.reserve(local.size());
+    p.reserve_more(local.size());
     for (const Vec3d& x : local) {
       body.offsets.push_back(Vec3f(x));
       const Vec3d ghost = (shape.nearest_surface_point(x) - x) * 2.0;
@@ -115,20 +117,32 @@ std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
   const double dp = spec.simulation.dp;
   ParticleSet& p = scene.particles;
   std::vector<Shape> shapes;
-  std::vector<double> reach;  // bounding radius + dp
-  for (const auto& b : spec.bodies) {
-    shapes.push_back(shape_of(b, spec));
-    reach.push_back(norm(shapes.back().bounding_half()) + dp);
+  std::vector<Aabb> boxes;  // each body's bounding box in the world, dp wider on every side
+  for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
+    shapes.push_back(shape_of(spec.bodies[bi], spec));
+    const RigidBody& body = scene.bodies[bi];
+    const Vec3d h = shapes.back().bounding_half();
+    Vec3d half{dp, dp, dp};
+    for (const Vec3d& axis : {Vec3d{h.x, 0, 0}, Vec3d{0, h.y, 0}, Vec3d{0, 0, h.z}}) {
+      const Vec3d e = rotate(body.state.q, axis);
+      half += Vec3d{std::abs(e.x), std::abs(e.y), std::abs(e.z)};
+    }
+    boxes.push_back({body.state.com - half, body.state.com + half});
   }
+  // Each particle is tested against the bodies whose bin holds it only.
+  const BoxBins bins(boxes);
   std::vector<char> keep(p.size(), 1);
   std::size_t removed = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const auto n = static_cast<std::int64_t>(p.size());
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : removed)
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
     if (!carries_fluid(p.kind[i])) continue;
-    for (std::size_t bi = 0; bi < shapes.size(); ++bi) {
+    const Vec3d& x = p.pos[i];
+    for (const std::uint32_t bi : bins.candidates(x)) {
+      if (!boxes[bi].contains(x)) continue;
       const RigidBody& body = scene.bodies[bi];
-      const Vec3d d = p.pos[i] - body.state.com;
-      if (norm2(d) > reach[bi] * reach[bi]) continue;
-      const Vec3d local = rotate_inverse(body.state.q, d);
+      const Vec3d local = rotate_inverse(body.state.q, x - body.state.com);
       // Inside, or within dp/2 of the surface (the fluid keeps dp/2 off it, as off walls).
       if (shapes[bi].inside(local) || shapes[bi].depth(local) < 0.5 * dp * (1 - 1e-6)) {
         keep[i] = 0, ++removed;
@@ -137,12 +151,7 @@ std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
     }
   }
   if (removed == 0) return 0;
-  ParticleSet q;
-  q.reserve(p.size() - removed);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (keep[i]) q.append_copy(p, i);
-  q.next_id = p.next_id;
-  p = std::move(q);
+  p.keep_only(keep);
   return removed;
 }
 

@@ -1,0 +1,145 @@
+// The set-up of a case's particles (solver/scene.cpp, solver/scene_bodies.cpp): the fluid
+// removed where fills overlap and inside bodies, against brute force, and the spatial bins
+// (geometry/box_bins.hpp) that keep the body test from being O(particles x bodies).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "netsph/case/case_spec.hpp"
+#include "netsph/core/quaternion.hpp"
+#include "netsph/geometry/box_bins.hpp"
+#include "netsph/geometry/box_lattice.hpp"
+#include "netsph/geometry/shapes.hpp"
+#include "netsph/solver/scene.hpp"
+
+namespace netsph {
+namespace {
+
+TEST(BoxBins, CandidatesHoldEveryBoxThatContainsThePoint) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Aabb> boxes;
+  for (int k = 0; k < 300; ++k) {
+    // Mostly small boxes and a few long bars, as a net's knots and its edge bars.
+    const Vec3d c{u(rng), u(rng), 0.2 * u(rng)};
+    Vec3d half{0.01 + 0.03 * u(rng), 0.01 + 0.03 * u(rng), 0.005 + 0.01 * u(rng)};
+    if (k % 50 == 0) half.x = 0.5;
+    boxes.push_back({c - half, c + half});
+  }
+  const BoxBins bins(boxes);
+  std::size_t inside = 0, tested = 0;
+  for (int s = 0; s < 200000; ++s) {
+    const Vec3d x{1.2 * u(rng) - 0.1, 1.2 * u(rng) - 0.1, 0.3 * u(rng) - 0.05};
+    const auto cand = bins.candidates(x);
+    ASSERT_TRUE(std::is_sorted(cand.begin(), cand.end()));
+    tested += cand.size();
+    for (std::uint32_t k = 0; k < boxes.size(); ++k) {
+      if (!boxes[k].contains(x)) continue;
+      ++inside;
+      ASSERT_TRUE(std::binary_search(cand.begin(), cand.end(), k))
+          << "box " << k << " contains (" << x.x << ", " << x.y << ", " << x.z
+          << ") but is not among the point's candidates";
+    }
+  }
+  std::printf("points in boxes: %zu; candidates tested per point: %.2f of %zu boxes\n", inside,
+              static_cast<double>(tested) / 200000, boxes.size());
+  EXPECT_GT(inside, 1000u);
+  // The point of the bins: a point meets a few boxes, not all of them.
+  EXPECT_LT(static_cast<double>(tested) / 200000, 10.0);
+  EXPECT_TRUE(bins.candidates({5, 5, 5}).empty());
+}
+
+CaseSpec fluid_cube(double dp) {
+  CaseSpec spec;
+  spec.simulation.dimensions = 3;
+  spec.simulation.dp = dp;
+  spec.fluid.gravity = {0, 0, -9.81};
+  FillSpec f;
+  f.box = {{0, 0, 0}, {0.4, 0.4, 0.4}};
+  spec.fills.push_back(f);
+  return spec;
+}
+
+TEST(SceneSetup, OverlappingFillsKeepTheFirstAndARemovedParticleRemovesNothing) {
+  // Three copies of a fill, shifted by 0.3 dp and 0.6 dp along x. The second lies 0.3 dp from
+  // the first everywhere: all of it goes. The third is 0.3 dp from the second (removed: it
+  // removes nothing) and 0.4 dp from the first's next column, except its last column, 0.6 dp
+  // beyond the first's last: only that column stays.
+  const double dp = 0.04;
+  CaseSpec spec = fluid_cube(dp);
+  FillSpec f = spec.fills[0];
+  for (const double shift : {0.3 * dp, 0.6 * dp}) {
+    f.box = {spec.fills[0].box.min + Vec3d{shift, 0, 0},
+             spec.fills[0].box.max + Vec3d{shift, 0, 0}};
+    spec.fills.push_back(f);
+  }
+  const Scene scene = build_scene(spec);
+  const std::size_t per_fill = 10 * 10 * 10, column = 10 * 10;
+  EXPECT_EQ(scene.particles.count(ParticleKind::Fluid), per_fill + column);
+  EXPECT_EQ(scene.removed_overlaps, 2 * per_fill - column);
+}
+
+TEST(SceneSetup, FluidInsideBodiesIsRemovedAsByTestingEveryBody) {
+  // Forty boxes of random sizes and orientations in a fluid cube; the fluid kept must be what a
+  // test of every particle against every body keeps (inside, or within dp/2 of the surface).
+  const double dp = 0.01;
+  CaseSpec spec = fluid_cube(dp);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 40; ++k) {
+    BodySpec b;
+    b.name = "box" + std::to_string(k);
+    b.lengths = {0.02 + 0.06 * u(rng), 0.02 + 0.06 * u(rng), 0.02 + 0.02 * u(rng)};
+    if (k % 10 == 0) b.lengths.x = 0.3;  // bars
+    b.center = {0.05 + 0.3 * u(rng), 0.05 + 0.3 * u(rng), 0.05 + 0.3 * u(rng)};
+    b.orientation = normalized(Quat{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5});
+    b.layers = 2;
+    spec.bodies.push_back(b);
+  }
+  const Scene scene = build_scene(spec);
+  ASSERT_EQ(scene.bodies.size(), spec.bodies.size());
+  const auto removed_by_some_body = [&](const Vec3d& x) {
+    for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+      const Shape s = Shape::box(spec.bodies[k].lengths);
+      const RigidBody& body = scene.bodies[k];
+      const Vec3d local = rotate_inverse(body.state.q, x - body.state.com);
+      if (s.inside(local) || s.depth(local) < 0.5 * dp * (1 - 1e-6)) return true;
+    }
+    return false;
+  };
+  std::size_t expected_removed = 0;
+  for (const Vec3d& x : fill_box({spec.fills[0].box.min, spec.fills[0].box.max, 3}, dp))
+    expected_removed += removed_by_some_body(x);
+  std::printf("fluid removed inside 40 bodies: %zu (brute force %zu)\n", scene.removed_in_bodies,
+              expected_removed);
+  EXPECT_GT(expected_removed, 1000u);
+  EXPECT_EQ(scene.removed_in_bodies, expected_removed);
+  const ParticleSet& p = scene.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] == ParticleKind::Fluid) {
+      ASSERT_FALSE(removed_by_some_body(p.pos[i])) << i;
+    }
+  }
+}
+
+TEST(SceneSetup, ABuiltCaseHoldsNoSpareCapacity) {
+  // Built in batches with doubling (O(n) copies), then trimmed: the run starts exact.
+  CaseSpec spec = fluid_cube(0.01);
+  WallSpec w;
+  w.name = "tank";
+  w.box = {{0, 0, 0}, {0.4, 0.4, 0.4}};
+  w.faces.fill(true);
+  spec.walls.push_back(w);
+  const Scene scene = build_scene(spec);
+  const ParticleSet& p = scene.particles;
+  EXPECT_EQ(p.pos.capacity(), p.size());
+  EXPECT_EQ(p.ghost.capacity(), p.size());
+  EXPECT_EQ(p.bytes(), p.size() * (sizeof(Vec3d) + 2 * sizeof(Vec3f) + sizeof(Real) +
+                                   sizeof(ParticleKind) + 2 * sizeof(std::uint32_t)));
+}
+
+}  // namespace
+}  // namespace netsph
