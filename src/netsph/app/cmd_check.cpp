@@ -61,8 +61,8 @@ int check_command(const CheckArgs& args) {
       spec.simulation.end_time, n_total,
       fmt::format("{:.0f} min {:02.0f} s", std::floor(n_total * per_step / 60),
                   std::fmod(n_total * per_step, 60.0)));
-  spdlog::info("outputs: a snapshot every {:g} s, a series row every {:g} s",
-               snapshot_interval(spec), series_interval(spec));
+  if (spec.output.snapshots) spdlog::info("{}", describe_snapshots(sim, snapshot_volume(sim)));
+  spdlog::info("a series row every {:g} s", series_interval(spec));
   return 0;
 }
 

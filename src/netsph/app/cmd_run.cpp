@@ -21,6 +21,27 @@
 
 namespace netsph::app {
 namespace {
+
+/// Logs what the snapshots will take and warns when that is more than the disk holds free: a
+/// run that fills the disk fails at its next write, hours in.
+void warn_if_snapshots_overfill(const Simulation& sim, const std::filesystem::path& out) {
+  const SnapshotVolume v = snapshot_volume(sim);
+  spdlog::info("{}", describe_snapshots(sim, v));
+  std::filesystem::path at = std::filesystem::absolute(out);
+  std::error_code ec;
+  while (!std::filesystem::exists(at, ec) && at.has_parent_path() && at != at.parent_path())
+    at = at.parent_path();
+  const std::filesystem::space_info space = std::filesystem::space(at, ec);
+  if (ec) return;
+  const double free_bytes = static_cast<double>(space.available);
+  if (v.total() > free_bytes) {
+    spdlog::warn(
+        "the snapshots need about {} but {} has {} free: set output.snapshot_region (a slice), a "
+        "larger output.snapshot_every, or output.snapshots = false (probes, nets and forces are "
+        "written either way)",
+        format_bytes(v.total()), at.string(), format_bytes(free_bytes));
+  }
+}
 extern "C" void on_interrupt(int) {
   request_stop();
 }
@@ -162,6 +183,7 @@ int run_command(const RunArgs& args) {
   if (reporting) {
     log_scene(*stepper->view(),
               std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());
+    if (spec.output.snapshots) warn_if_snapshots_overfill(*stepper->view(), out);
   }
   if (restart) {
     spdlog::info("restarting from {} at t = {:.6g} s (step {}), to end_time = {:.6g} s",

@@ -1,11 +1,15 @@
 #include "netsph/app/scene_report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <unordered_set>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+
+#include "netsph/io/snapshot_writer.hpp"
+#include "netsph/solver/run_outputs.hpp"
 
 namespace netsph::app {
 
@@ -59,6 +63,29 @@ void log_scene(const Simulation& sim, double setup_seconds) {
                s.domain_min.y, s.domain_min.z, s.domain_max.x, s.domain_max.y, s.domain_max.z,
                spec.domain.given ? "" : " (default: particles' bounding box + margin)");
   for (const auto& w : s.warnings) spdlog::warn("{}", w);
+}
+
+SnapshotVolume snapshot_volume(const Simulation& sim) {
+  const CaseSpec& spec = sim.spec();
+  SnapshotVolume v;
+  v.particles = snapshot_particle_count(sim);
+  v.bytes_each = static_cast<double>(v.particles * SnapshotWriter::bytes_per_particle());
+  const double every = snapshot_interval(spec);
+  v.count =
+      every > 0 ? static_cast<int>(std::ceil(spec.simulation.end_time / every - 1e-9)) + 1 : 1;
+  return v;
+}
+
+std::string format_bytes(double b) {
+  return b >= 1e9 ? fmt::format("{:.1f} GB", b / 1e9) : fmt::format("{:.1f} MB", b / 1e6);
+}
+
+std::string describe_snapshots(const Simulation& sim, const SnapshotVolume& v) {
+  const auto size = format_bytes;
+  return fmt::format("snapshots every {:g} s: {} of {} particles{}, {} each, {} in all",
+                     snapshot_interval(sim.spec()), v.count, v.particles,
+                     sim.spec().output.snapshot_region ? " (inside output.snapshot_region)" : "",
+                     size(v.bytes_each), size(v.total()));
 }
 
 }  // namespace netsph::app

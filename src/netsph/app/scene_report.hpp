@@ -1,11 +1,27 @@
 #pragma once
 // Human-readable description of a built scene: particle counts per source, model constants,
 // domain and memory. Shared by `run` (logged) and `check` (printed).
+#include <string>
+
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {
 
 /// setup_seconds: how long the case took to build (not shown when negative).
 void log_scene(const Simulation& sim, double setup_seconds = -1);
+
+/// What the particle snapshots of a whole run will take on disk, from the present particles.
+struct SnapshotVolume {
+  std::size_t particles = 0;  ///< per snapshot (inside output.snapshot_region when given)
+  double bytes_each = 0;      ///< one snapshot file
+  int count = 0;              ///< snapshots over the run, t = 0 and the end included
+  double total() const { return bytes_each * count; }
+};
+SnapshotVolume snapshot_volume(const Simulation& sim);
+/// "snapshots every 0.1 s: 41 of 3.3e6 particles (inside output.snapshot_region), 190 MB each,
+/// 7.6 GB in all"
+std::string describe_snapshots(const Simulation& sim, const SnapshotVolume& v);
+/// "5.8 MB", "7.7 GB"
+std::string format_bytes(double bytes);
 
 }  // namespace netsph::app

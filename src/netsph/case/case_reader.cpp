@@ -78,7 +78,8 @@ const std::vector<TableKeys>& schema() {
       {"probe", {"name", "type", "at", "start", "end", "points", "min", "max", "spacing", "every"}},
       {"current", {"velocity", "model", "screen", "normal_drag", "tangential_drag"}},
       {"output",
-       {"snapshots", "snapshot_every", "series_every", "checkpoint_every", "force_window"}},
+       {"snapshots", "snapshot_every", "series_every", "checkpoint_every", "force_window",
+        "snapshot_region"}},
   };
   return tables;
 }
@@ -533,6 +534,34 @@ void CaseReader::read_output() {
   o.checkpoint_every =
       r.number("checkpoint_every", NumberRule::non_negative("s"), o.checkpoint_every);
   read_force_window(r);
+  read_snapshot_region(r);
+}
+
+void CaseReader::read_snapshot_region(const TomlTableReader& r) {
+  const toml::node* node = r.find("snapshot_region");
+  if (!node) return;
+  const auto* table = node->as_table();
+  if (!table) {
+    r.fail_value("snapshot_region", *node,
+                 fmt::format("must be a table such as {{ min = [x, y, z], max = [x, y, z] }} (the "
+                             "box whose particles the snapshots hold, m), not {}",
+                             type_name(*node)));
+  }
+  static const std::vector<std::string_view> keys = {"min", "max"};
+  const std::string path = r.key_path("snapshot_region");
+  TomlTableReader t(*table, path, path, keys, source_);
+  const BoxSpec box = read_box(t, "the snapshot region");
+  const DomainSpec& d = spec_.domain;
+  if (d.given) {
+    for (const int axis : used_axes()) {
+      if (box.max[axis] > d.min[axis] && box.min[axis] < d.max[axis]) continue;
+      r.fail_value("snapshot_region", *node,
+                   fmt::format("lies outside [domain] (min {}, max {}) on {}: the snapshots "
+                               "would hold no particle",
+                               format_vec3(d.min), format_vec3(d.max), "xyz"[axis]));
+    }
+  }
+  spec_.output.snapshot_region = box;
 }
 
 void CaseReader::read_force_window(const TomlTableReader& r) {

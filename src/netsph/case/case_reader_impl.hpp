@@ -81,6 +81,7 @@ class CaseReader {
   void check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const;
   void read_output();
   void read_force_window(const TomlTableReader& r);
+  void read_snapshot_region(const TomlTableReader& r);
 
   BoxSpec read_box(const TomlTableReader& r, std::string_view what) const;
   Vec3d read_position(const TomlTableReader& r, std::string_view key,

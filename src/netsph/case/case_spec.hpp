@@ -258,6 +258,9 @@ struct OutputSpec {
   /// Time window over which summary.json averages body forces and Cd, s; default: the second
   /// half of the run (force_window = [t0, t1]).
   std::optional<std::array<double, 2>> force_window;
+  /// snapshot_region = { min, max }: snapshots hold only the particles inside this box (a
+  /// slice through a large case instead of all of it). The nets' files are not affected.
+  std::optional<BoxSpec> snapshot_region;
 };
 
 struct CaseSpec {

@@ -248,6 +248,12 @@ void SnapshotWriter::resume(const std::string& entries) {
   rewrite_xdmf();
 }
 
+std::size_t SnapshotWriter::bytes_per_particle() {
+  std::size_t b = 0;
+  for (const FieldSpec& f : kFields) b += static_cast<std::size_t>(f.precision * f.components);
+  return b;
+}
+
 std::filesystem::path SnapshotWriter::xdmf_path() const {
   return dir_ / (base_ + ".xdmf");
 }

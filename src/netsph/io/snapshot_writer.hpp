@@ -47,6 +47,8 @@ class SnapshotWriter {
   std::string entries_text() const;
 
   int count() const { return static_cast<int>(entries_.size()); }
+  /// Bytes a snapshot file holds per particle (its datasets, uncompressed).
+  static std::size_t bytes_per_particle();
   std::filesystem::path xdmf_path() const;
 
  private:

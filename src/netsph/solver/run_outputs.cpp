@@ -166,18 +166,50 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
   }
 }
 
+bool in_snapshot_region(const CaseSpec& spec, const Vec3d& x) {
+  const auto& r = spec.output.snapshot_region;
+  if (!r) return true;
+  const bool y = spec.simulation.dimensions == 2 || (x.y >= r->min.y && x.y <= r->max.y);
+  return x.x >= r->min.x && x.x <= r->max.x && x.z >= r->min.z && x.z <= r->max.z && y;
+}
+
+std::size_t snapshot_particle_count(const Simulation& sim) {
+  const ParticleSet& p = sim.particles();
+  if (!sim.spec().output.snapshot_region) return p.size();
+  std::size_t n = 0;
+  for (const Vec3d& x : p.pos) n += in_snapshot_region(sim.spec(), x);
+  return n;
+}
+
 void RunOutputs::write_snapshot(const Simulation& sim) {
   const ParticleSet& p = sim.particles();
   const std::vector<float> press = sim.pressures();
   SnapshotFields f;
   f.time = sim.time();
   f.step = sim.steps();
-  f.position = p.pos;
-  f.velocity = p.vel;
-  f.density = p.rho;
-  f.pressure = press;
-  f.kind = {reinterpret_cast<const std::uint8_t*>(p.kind.data()), p.kind.size()};
-  f.id = p.id;
+  // Inside output.snapshot_region only: the particles' fields gathered into a set of their own.
+  ParticleSet region;
+  std::vector<float> region_press;
+  const ParticleSet* q = &p;
+  const std::vector<float>* qp = &press;
+  if (sim.spec().output.snapshot_region) {
+    std::vector<std::uint32_t> inside;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (in_snapshot_region(sim.spec(), p.pos[i])) inside.push_back(static_cast<std::uint32_t>(i));
+    const auto gather = [&](auto& out, const auto& in) {
+      out.resize(inside.size());
+      for (std::size_t k = 0; k < inside.size(); ++k) out[k] = in[inside[k]];
+    };
+    gather(region.pos, p.pos), gather(region.vel, p.vel), gather(region.rho, p.rho);
+    gather(region.kind, p.kind), gather(region.id, p.id), gather(region_press, press);
+    q = &region, qp = &region_press;
+  }
+  f.position = q->pos;
+  f.velocity = q->vel;
+  f.density = q->rho;
+  f.pressure = *qp;
+  f.kind = {reinterpret_cast<const std::uint8_t*>(q->kind.data()), q->kind.size()};
+  f.id = q->id;
   snapshots_->write(f);
   last_snapshot_step_ = sim.steps();
   write_net_files(sim, false);

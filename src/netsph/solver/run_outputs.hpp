@@ -34,6 +34,11 @@ struct GlobalMeasures {
 
 GlobalMeasures measure(const Simulation& sim);
 
+/// Whether a particle at x goes into the snapshots (inside output.snapshot_region, or all).
+bool in_snapshot_region(const CaseSpec& spec, const Vec3d& x);
+/// How many of the present particles a snapshot would hold.
+std::size_t snapshot_particle_count(const Simulation& sim);
+
 class RunOutputs {
  public:
   /// `resume`: a checkpoint to continue from (restart), or null for a new run. A restart keeps
