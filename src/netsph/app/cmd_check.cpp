@@ -56,11 +56,12 @@ int check_command(const CheckArgs& args) {
       threads, np * n / wall,
       backend == "host-device" ? " (the CUDA kernels run on the CPU: not a GPU's speed)" : "");
   spdlog::info(
-      "estimate for end_time = {:g} s: about {:.3g} steps, {} (dt varies as the flow "
-      "develops: take this as an order of magnitude)",
+      "estimate for end_time = {:g} s: about {:.3g} steps, {}, {:.3g} h per simulated second (dt "
+      "varies as the flow develops: take this as an order of magnitude)",
       spec.simulation.end_time, n_total,
       fmt::format("{:.0f} min {:02.0f} s", std::floor(n_total * per_step / 60),
-                  std::fmod(n_total * per_step, 60.0)));
+                  std::fmod(n_total * per_step, 60.0)),
+      per_step / mean_dt / 3600);
   if (spec.output.snapshots) spdlog::info("{}", describe_snapshots(sim, snapshot_volume(sim)));
   spdlog::info("a series row every {:g} s", series_interval(spec));
   return 0;
