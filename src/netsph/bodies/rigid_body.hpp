@@ -83,20 +83,27 @@ NETSPH_HD Vec3d rigid_point_velocity(const RigidState& s, const Vec3d& r) {
   return s.vel + cross(s.omega, r);
 }
 
+/// A body particle's mDBC ghost vector in the world frame from its body-frame one.
+NETSPH_HD Vec3f rigid_ghost(const RigidState& s, const Vec3f& ghost_offset, int dims) {
+  Vec3d g = rotate(s.q, Vec3d(ghost_offset));
+  if (dims == 2) g.y = 0;  // rotation round-off must not leave the x-z plane
+  return Vec3f(g);
+}
+
 /// Places one body particle on its body's state: world position from its body-frame offset,
 /// the rotated mDBC ghost vector, and (when the body shows its own velocity) the rigid
 /// velocity there. Returns the displacement squared from where it was. Both backends place
 /// body particles through this.
+
 NETSPH_HD double place_rigid_particle(const RigidState& s, const Vec3f& offset,
                                       const Vec3f& ghost_offset, int dims, bool shows_own_velocity,
                                       Vec3d& pos, Vec3f& vel, Vec3f& ghost) {
   Vec3d r = rotate(s.q, Vec3d(offset));
-  Vec3d g = rotate(s.q, Vec3d(ghost_offset));
-  if (dims == 2) r.y = 0, g.y = 0;  // rotation round-off must not leave the x-z plane
+  if (dims == 2) r.y = 0;  // rotation round-off must not leave the x-z plane
   const Vec3d previous = pos;
   pos = s.com + r;
   if (shows_own_velocity) vel = Vec3f(rigid_point_velocity(s, r));
-  ghost = Vec3f(g);
+  ghost = rigid_ghost(s, ghost_offset, dims);
   const Vec3d d = pos - previous;
   return d.x * d.x + d.y * d.y + d.z * d.z;
 }

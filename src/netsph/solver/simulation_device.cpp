@@ -13,6 +13,9 @@
 namespace netsph {
 
 void Simulation::start_device() {
+  // A restart replaces a running device step: its buffers go first, or the device would hold
+  // two copies of the case at once (40 GB for the paper's full net).
+  device_.reset();
   DeviceSetup setup = device_setup(spec_, scene_);
   setup.advance_bodies = [this](bool corrector, double time, double dt,
                                 const std::vector<DeviceBodyLoads>& loads,

@@ -9,6 +9,7 @@
 #include <cub/device/device_scan.cuh>
 
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <utility>
 
@@ -26,10 +27,32 @@ __global__ void for_each_kernel(std::uint32_t n, F f) {
   if (i < n) f(i);
 }
 
-__global__ inline void count_below_kernel(const std::uint32_t* keys, std::uint32_t n,
-                                          std::uint32_t bound, std::uint32_t* out) {
+// A template, so that a second .cu including this header does not define it twice.
+template <class Key>
+__global__ void count_below_kernel(const Key* keys, std::uint32_t n, Key bound, std::uint32_t* out) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i < n && keys[i] < bound && (i + 1 == n || keys[i + 1] >= bound)) *out = i + 1;
+}
+
+/// max(a, b) with NaN as the identity, as HostExec::max_of: CUB's own maximum keeps a NaN that
+/// comes first, which would then depend on where it falls in the reduction tree.
+struct MaxSkippingNan {
+  template <class T>
+  __host__ __device__ T operator()(const T& a, const T& b) const {
+    if (!(a == a)) return b;
+    if (!(b == b)) return a;
+    return a < b ? b : a;
+  }
+};
+
+/// NETSPH_CUDA_SYNC=1 waits for every kernel and checks it, so that a fault is reported by the
+/// launch that caused it (for bringing the backend up on a new machine; slow).
+inline bool sync_each_launch() {
+  static const bool on = [] {
+    const char* v = std::getenv("NETSPH_CUDA_SYNC");
+    return v != nullptr && v[0] == '1';
+  }();
+  return on;
 }
 
 /// A device array with the part of std::vector's interface the step uses.
@@ -78,6 +101,15 @@ struct CudaExec {
     const auto blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
     for_each_kernel<<<blocks, kBlock>>>(static_cast<std::uint32_t>(n), f);
     cuda_check(cudaGetLastError(), "kernel launch");
+    if (sync_each_launch()) cuda_check(cudaDeviceSynchronize(), "kernel (NETSPH_CUDA_SYNC)");
+  }
+
+  /// Resizes a buffer whose contents are not needed any more: the old storage is freed first
+  /// and nothing is copied (DeviceBuffer::resize keeps the contents).
+  template <class T>
+  static void resize_discarding(DeviceBuffer<T>& b, std::size_t n) {
+    if (n > b.capacity()) DeviceBuffer<T>().swap(b);
+    b.resize(n);
   }
 
   static DeviceBuffer<unsigned char>& temp(std::size_t bytes) {
@@ -110,22 +142,27 @@ struct CudaExec {
     out.resize(1);
     std::size_t bytes = 0;
     const int count = static_cast<int>(n);
-    cuda_check(cub::DeviceReduce::Max(nullptr, bytes, x, out.data(), count), "max (size)");
-    cuda_check(cub::DeviceReduce::Max(temp(bytes).data(), bytes, x, out.data(), count), "max");
+    const MaxSkippingNan op;
+    cuda_check(cub::DeviceReduce::Reduce(nullptr, bytes, x, out.data(), count, op, T(0)),
+               "max (size)");
+    cuda_check(
+        cub::DeviceReduce::Reduce(temp(bytes).data(), bytes, x, out.data(), count, op, T(0)),
+        "max");
     T h{};
     cuda_check(cudaMemcpy(&h, out.data(), sizeof(T), cudaMemcpyDeviceToHost), "max (copy)");
     return h > T(0) ? h : T(0);
   }
 
-  /// out[i] = in[0] + ... + in[i - 1]; returns the sum of all.
+  /// out[i] = in[0] + ... + in[i - 1] (in may be out: CUB scans in place); returns the sum of
+  /// all.
   static std::size_t exclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n) {
     if (n == 0) return 0;
     std::size_t bytes = 0;
     const int count = static_cast<int>(n);
+    std::uint32_t last_in = 0, last_out = 0;  // the last input before an in-place scan
+    cuda_check(cudaMemcpy(&last_in, in + n - 1, sizeof(last_in), cudaMemcpyDeviceToHost), "scan");
     cuda_check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, in, out, count), "scan (size)");
     cuda_check(cub::DeviceScan::ExclusiveSum(temp(bytes).data(), bytes, in, out, count), "scan");
-    std::uint32_t last_in = 0, last_out = 0;
-    cuda_check(cudaMemcpy(&last_in, in + n - 1, sizeof(last_in), cudaMemcpyDeviceToHost), "scan");
     cuda_check(cudaMemcpy(&last_out, out + n - 1, sizeof(last_out), cudaMemcpyDeviceToHost),
                "scan");
     return static_cast<std::size_t>(last_in) + last_out;
@@ -144,8 +181,8 @@ struct CudaExec {
     cuda_check(cudaMemset(out.data(), 0, sizeof(std::uint32_t)), "count (reset)");
     if (n > 0) {
       const auto blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
-      count_below_kernel<<<blocks, kBlock>>>(keys, static_cast<std::uint32_t>(n), bound,
-                                             out.data());
+      count_below_kernel<std::uint32_t>
+          <<<blocks, kBlock>>>(keys, static_cast<std::uint32_t>(n), bound, out.data());
       cuda_check(cudaGetLastError(), "count launch");
     }
     std::uint32_t h = 0;

@@ -61,7 +61,9 @@ struct DeviceBodyLoads {
   double f[12];  ///< fluid force, fluid torque, contact force, contact torque
 };
 
-/// The particle arrays of the state being advanced (sorted by cell).
+/// The particle arrays of the state being advanced (sorted by cell). The mDBC ghost vectors
+/// are not among them: only solids have one, so they live in tables of the solids
+/// (DeviceGhosts), 12 B a particle less for every particle and one array less to sort.
 struct DeviceState {
   Vec3d* pos;
   Vec3f* vel;
@@ -69,8 +71,28 @@ struct DeviceState {
   ParticleKind* kind;
   std::uint32_t* id;
   std::uint32_t* group;
-  Vec3f* ghost;
 };
+
+/// The solids' mDBC ghost vectors: a wall particle's is fixed (walls translate), in a table by
+/// particle id (the walls are built first, so their ids are 0, 1, ...); a body particle's
+/// turns with its body, from the body-frame table (DeviceBody::offset_base).
+struct DeviceGhosts {
+  const Vec3f* wall;  ///< by particle id, wall_count entries
+  std::uint32_t wall_count;
+  const Vec3f* body;
+  int dims;
+};
+
+/// The ghost vector of particle i (zero for fluid and buffer particles, and for solids
+/// without one), the one ParticleSet::ghost holds on the CPU.
+NETSPH_HD Vec3f device_solid_ghost(const DeviceState& s, const DeviceBody* bodies,
+                                   const DeviceGhosts& gh, std::uint32_t i) {
+  const ParticleKind k = s.kind[i];
+  if (k == ParticleKind::Wall) return s.id[i] < gh.wall_count ? gh.wall[s.id[i]] : Vec3f{};
+  if (k != ParticleKind::Body) return {};
+  const DeviceBody& b = bodies[s.group[i]];
+  return rigid_ghost(b.state, gh.body[b.offset_base + (s.id[i] - b.first_id)], gh.dims);
+}
 
 /// A particle's float position relative to the grid origin and its pressure in one 16-byte
 /// element: the candidate test, the hottest loop of the step, reads a neighbour's position
@@ -242,10 +264,11 @@ template <class Kernel>
 NETSPH_HD void device_mdbc_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                     const DeviceState& s, const DeviceWall* walls,
                                     const WallKinematics* motion, const DeviceBody* bodies,
-                                    const FluidModel& m, std::uint32_t i) {
+                                    const DeviceGhosts& ghosts, const FluidModel& m,
+                                    std::uint32_t i) {
   const ParticleKind k = s.kind[i];
   if (k != ParticleKind::Wall && k != ParticleKind::Body) return;
-  const Vec3f off = s.ghost[i];
+  const Vec3f off = device_solid_ghost(s, bodies, ghosts, i);
   const bool has_ghost = off.x != 0 || off.y != 0 || off.z != 0;
   WallSlip slip;
   Vec3f v_solid;
@@ -315,7 +338,6 @@ NETSPH_HD void device_create_buffer_particle(const DeviceState& s, const ZoneGeo
   s.kind[slot] = ParticleKind::Buffer;
   s.id[slot] = id;
   s.group[slot] = zone;
-  s.ghost[slot] = Vec3f{};
   s.group[i] = 0;
 }
 
@@ -395,8 +417,9 @@ NETSPH_HD double device_place_body_particle(const DeviceState& s, const DeviceBo
   if (s.kind[i] != ParticleKind::Body) return 0;
   const DeviceBody& b = bodies[s.group[i]];
   const std::uint32_t k = b.offset_base + (s.id[i] - b.first_id);
+  Vec3f ghost;  // not kept: device_solid_ghost turns it when mDBC needs it
   const double d2 = place_rigid_particle(b.state, offsets[k], ghosts[k], dims, b.shows_own_velocity,
-                                         s.pos[i], s.vel[i], s.ghost[i]);
+                                         s.pos[i], s.vel[i], ghost);
   return measure ? d2 : 0.0;
 }
 

@@ -22,7 +22,8 @@
 // numbers per body back, lets the host advance the bodies (hooks.advance_bodies, the CPU
 // solver's code) and copies their new states in; the particles then follow on the device.
 //
-// Memory: the state (positions, velocities, densities, kinds, ids, groups, ghost offsets), the
+// Memory: the state (positions, velocities, densities, kinds, ids, groups; the solids' ghost
+// vectors are tables of the solids, DeviceGhosts), the
 // step start's velocities and densities, the sorted cell keys and the cell table persist; every
 // other per-particle array lives in one work area (work_area.hpp) that the phases of a step
 // share: the view and the rates, the sort's buffers, the open boundaries' flags.
@@ -116,7 +117,7 @@ class DeviceStepper {
     Exec::upload(kind_, p.kind.data(), n_);
     Exec::upload(id_, p.id.data(), n_);
     Exec::upload(group_, p.group.data(), n_);
-    Exec::upload(ghost_, p.ghost.data(), n_);
+    upload_wall_ghosts(p);
     Exec::upload(walls_, s_.walls.data(), s_.walls.size());
     if (!s_.zones.empty()) {
       std::vector<ZoneGeometry> geo;
@@ -220,15 +221,25 @@ class DeviceStepper {
   /// Copies the particles back (sorted by cell as of the last step).
   void download(ParticleSet& p) const {
     p.pos.resize(n_), p.vel.resize(n_), p.rho.resize(n_), p.kind.resize(n_), p.id.resize(n_);
-    p.group.resize(n_), p.ghost.resize(n_);
+    p.group.resize(n_);
     Exec::download(p.pos.data(), pos_, n_);
     Exec::download(p.vel.data(), vel_, n_);
     Exec::download(p.rho.data(), rho_, n_);
     Exec::download(p.kind.data(), kind_, n_);
     Exec::download(p.id.data(), id_, n_);
     Exec::download(p.group.data(), group_, n_);
-    Exec::download(p.ghost.data(), ghost_, n_);
     p.next_id = next_id_;
+    // The ghost vectors, as device_solid_ghost gives them.
+    p.ghost.assign(n_, Vec3f{});
+    for (std::size_t i = 0; i < n_; ++i) {
+      if (p.kind[i] == ParticleKind::Wall && p.id[i] < wall_ghosts_host_.size()) {
+        p.ghost[i] = wall_ghosts_host_[p.id[i]];
+      } else if (p.kind[i] == ParticleKind::Body) {
+        const DeviceBody& b = s_.bodies[p.group[i]];
+        p.ghost[i] = rigid_ghost(b.state, s_.body_ghosts[b.offset_base + (p.id[i] - b.first_id)],
+                                 s_.model.dims);
+      }
+    }
   }
 
   double time() const { return time_; }
@@ -240,8 +251,9 @@ class DeviceStepper {
   double bytes_per_particle() const {
     std::size_t bytes = 0;
     const auto add = [&bytes](const auto& b) { bytes += b.capacity() * sizeof(*b.data()); };
-    add(pos_), add(vel_), add(rho_), add(kind_), add(id_), add(group_), add(ghost_);
+    add(pos_), add(vel_), add(rho_), add(kind_), add(id_), add(group_);
     add(svel_), add(srho_), add(keys_), add(cell_begin_), add(work_);
+    add(wall_ghosts_), add(offsets_), add(body_ghosts_);  // the solids' tables
     return static_cast<double>(bytes) / static_cast<double>(n_ > 0 ? n_ : 1);
   }
 
@@ -255,19 +267,37 @@ class DeviceStepper {
   }
   void alloc_state(std::size_t n) {
     pos_.resize(n), vel_.resize(n), rho_.resize(n), kind_.resize(n), id_.resize(n);
-    group_.resize(n), ghost_.resize(n), svel_.resize(n), srho_.resize(n), keys_.resize(n);
+    group_.resize(n), svel_.resize(n), srho_.resize(n), keys_.resize(n);
     cell_begin_.resize(static_cast<std::size_t>(s_.grid.cells()) + 2);
   }
   /// The work area for n particles: the largest of its phases' layouts (contents not kept).
   void alloc_work(std::size_t n) {
     WorkCarver step(nullptr, n), sorting(nullptr, n), open(nullptr, n);
     step_layout(step), sort_layout(sorting), open_layout(open);
-    work_.resize(std::max({step.bytes(), sorting.bytes(), open.bytes(), std::size_t{1}}));
+    // Nothing in it outlives a phase: no copy of the old contents, no old and new at once.
+    Exec::resize_discarding(work_,
+                            std::max({step.bytes(), sorting.bytes(), open.bytes(), std::size_t{1}}));
   }
 
   DeviceState state() {
-    return {pos_.data(), vel_.data(),   rho_.data(),  kind_.data(),
-            id_.data(),  group_.data(), ghost_.data()};
+    return {pos_.data(), vel_.data(), rho_.data(), kind_.data(), id_.data(), group_.data()};
+  }
+  DeviceGhosts ghosts() {
+    return {wall_ghosts_.data(), static_cast<std::uint32_t>(wall_ghosts_host_.size()),
+            body_ghosts_.data(), s_.model.dims};
+  }
+  /// The walls' ghost vectors by particle id (DeviceGhosts), from the particles' own.
+  void upload_wall_ghosts(const ParticleSet& p) {
+    std::size_t count = 0;  // DBC walls have no ghost: no table
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec3f g = p.ghost[i];
+      if (p.kind[i] == ParticleKind::Wall && (g.x != 0 || g.y != 0 || g.z != 0))
+        count = std::max<std::size_t>(count, p.id[i] + 1);
+    }
+    wall_ghosts_host_.assign(count, Vec3f{});
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.kind[i] == ParticleKind::Wall && p.id[i] < count) wall_ghosts_host_[p.id[i]] = p.ghost[i];
+    if (count > 0) Exec::upload(wall_ghosts_, wall_ghosts_host_.data(), count);
   }
   DeviceStart start() { return {svel_.data(), srho_.data()}; }
 
@@ -356,23 +386,28 @@ class DeviceStepper {
     gather(pos_, sorted_order, sa.scratch, kept), gather(vel_, sorted_order, sa.scratch, kept);
     gather(rho_, sorted_order, sa.scratch, kept), gather(kind_, sorted_order, sa.scratch, kept);
     gather(id_, sorted_order, sa.scratch, kept), gather(group_, sorted_order, sa.scratch, kept);
-    gather(ghost_, sorted_order, sa.scratch, kept);
     if (mid_step) {
       gather(svel_, sorted_order, sa.scratch, kept);
       gather(srho_, sorted_order, sa.scratch, kept);
     }
     n_ = kept;
     timer.emplace(profile(), DevicePhase::CellTable);
-    // cell_begin[c] = first sorted index with key >= c, for c in [0, cells + 1].
+    // cell_begin[c] = first sorted index with key >= c, for c in [0, cells + 1]: each cell's
+    // particle count (written by the first particle of the cell), then an exclusive scan in
+    // place. (Filling the empty cells between two particles' keys from the particles instead
+    // left one thread to write every cell of the air above a free surface, millions in a row.)
     std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* k = keys_.data();
     const std::uint32_t n = static_cast<std::uint32_t>(n_);
-    const std::uint32_t last = g.sentinel() + 1;
-    Exec::for_each(n_ + 1, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      const std::uint32_t lo = i == 0 ? 0 : k[i - 1] + 1;
-      const std::uint32_t hi = i == n ? last : k[i];
-      for (std::uint32_t c = lo; c <= hi; ++c) begin[c] = i;
+    const std::size_t entries = static_cast<std::size_t>(g.sentinel()) + 2;
+    Exec::for_each(entries, [=] NETSPH_LAMBDA(std::uint32_t c) { begin[c] = 0; });
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      if (i > 0 && k[i - 1] == k[i]) return;
+      std::uint32_t j = i + 1;
+      while (j < n && k[j] == k[i]) ++j;
+      begin[k[i]] = j - i;
     });
+    Exec::exclusive_scan(begin, begin, entries);
   }
 
   /// v = v[order] for the first `kept` sorted slots: gathered into the scratch, copied back
@@ -401,9 +436,10 @@ class DeviceStepper {
     const DeviceWall* walls = walls_.data();
     const WallKinematics* motion = motion_.data();
     const DeviceBody* bodies = bodies_.data();
+    const DeviceGhosts gh = ghosts();
     const FluidModel m = s_.model;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      device_mdbc_particle<K>(g, begin, st, walls, motion, bodies, m, i);
+      device_mdbc_particle<K>(g, begin, st, walls, motion, bodies, gh, m, i);
     });
   }
 
@@ -675,7 +711,7 @@ class DeviceStepper {
   bool profiling_ = false;
   DevicePhaseTimes times_;
   Buffer<Vec3d> pos_;
-  Buffer<Vec3f> vel_, ghost_, svel_;
+  Buffer<Vec3f> vel_, svel_;
   Buffer<Real> rho_, srho_;
   Buffer<ParticleKind> kind_;
   Buffer<std::uint32_t> id_, group_, keys_, cell_begin_;
@@ -687,7 +723,8 @@ class DeviceStepper {
   Buffer<ZoneGeometry> zone_geo_;
   Buffer<double> profile_z_, profile_u_;
   Buffer<DeviceBody> bodies_;
-  Buffer<Vec3f> offsets_, body_ghosts_;
+  Buffer<Vec3f> offsets_, body_ghosts_, wall_ghosts_;
+  std::vector<Vec3f> wall_ghosts_host_;  ///< by particle id (DeviceGhosts::wall)
   Buffer<DeviceBodyLoads> loads_;
   std::vector<DeviceBodyLoads> loads_host_;
   std::vector<RigidState> states_;

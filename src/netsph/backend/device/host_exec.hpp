@@ -42,6 +42,7 @@ struct HostExec {
     return odd_passes;
   }
 
+  /// The largest of x[0..n) and 0; NaNs are passed over (as CudaExec's).
   template <class T>
   static T max_of(const T* x, std::size_t n) {
     T m = 0;
@@ -57,7 +58,13 @@ struct HostExec {
     *p += v;
   }
 
-  /// out[i] = in[0] + ... + in[i - 1]; returns the sum of all.
+  /// Resizes a buffer whose contents are not needed any more.
+  template <class T>
+  static void resize_discarding(Buffer<T>& b, std::size_t n) {
+    b.resize(n);
+  }
+
+  /// out[i] = in[0] + ... + in[i - 1] (in may be out); returns the sum of all.
   static std::size_t exclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n) {
     std::uint32_t sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
