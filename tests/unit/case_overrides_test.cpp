@@ -123,6 +123,15 @@ TEST(CaseOverrides, MalformedOptionsPointAtSet) {
     EXPECT_NE(e.message().find(option), std::string::npos) << e.message();
   }
   EXPECT_NE(error_with({"wall.5.layers=2"}).message().find("out of range"), std::string::npos);
+  // An indexed value of a key the case does not have: full3d.toml has no structure_gravity. The
+  // message must not send the user to set keys of an entry (which then fails as out of range).
+  const Error absent = error_with({"fluid.structure_gravity.2=-1"});
+  EXPECT_NE(absent.message().find("the case has no fluid.structure_gravity"), std::string::npos)
+      << absent.message();
+  EXPECT_NE(absent.message().find("fluid.structure_gravity=[...]"), std::string::npos);
+  // Present as an array of values: set it whole.
+  EXPECT_NE(error_with({"fluid.gravity.2=-1"}).message().find("set it as a whole"),
+            std::string::npos);
 }
 
 TEST(CaseOverrides, BodyKeys) {

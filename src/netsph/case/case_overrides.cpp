@@ -133,6 +133,12 @@ toml::node& entry_of_array(toml::array& array, const std::string& segment,
                         "e.g. {}.0.{}",
                         walked, walked, segment));
   }
+  if (last && array.empty()) {
+    // Not in the case yet: nothing tells an array of values (gravity) from one of tables.
+    fail(o, fmt::format("the case has no {0}: set an array of values as a whole, e.g. {0}=[...]; "
+                        "for an entry of an array of tables set its keys, e.g. {0}.{1}.<key>=...",
+                        walked, *index));
+  }
   if (last) {
     fail(o, fmt::format("cannot replace a whole entry of {}; set its keys, e.g. {}.{}.<key>=...",
                         walked, walked, *index));
