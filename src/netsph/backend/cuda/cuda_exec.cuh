@@ -29,7 +29,8 @@ __global__ void for_each_kernel(std::uint32_t n, F f) {
 
 // A template, so that a second .cu including this header does not define it twice.
 template <class Key>
-__global__ void count_below_kernel(const Key* keys, std::uint32_t n, Key bound, std::uint32_t* out) {
+__global__ void count_below_kernel(const Key* keys, std::uint32_t n, Key bound,
+                                   std::uint32_t* out) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i < n && keys[i] < bound && (i + 1 == n || keys[i + 1] >= bound)) *out = i + 1;
 }
@@ -145,9 +146,8 @@ struct CudaExec {
     const MaxSkippingNan op;
     cuda_check(cub::DeviceReduce::Reduce(nullptr, bytes, x, out.data(), count, op, T(0)),
                "max (size)");
-    cuda_check(
-        cub::DeviceReduce::Reduce(temp(bytes).data(), bytes, x, out.data(), count, op, T(0)),
-        "max");
+    cuda_check(cub::DeviceReduce::Reduce(temp(bytes).data(), bytes, x, out.data(), count, op, T(0)),
+               "max");
     T h{};
     cuda_check(cudaMemcpy(&h, out.data(), sizeof(T), cudaMemcpyDeviceToHost), "max (copy)");
     return h > T(0) ? h : T(0);

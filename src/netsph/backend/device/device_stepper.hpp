@@ -275,8 +275,8 @@ class DeviceStepper {
     WorkCarver step(nullptr, n), sorting(nullptr, n), open(nullptr, n);
     step_layout(step), sort_layout(sorting), open_layout(open);
     // Nothing in it outlives a phase: no copy of the old contents, no old and new at once.
-    Exec::resize_discarding(work_,
-                            std::max({step.bytes(), sorting.bytes(), open.bytes(), std::size_t{1}}));
+    Exec::resize_discarding(
+        work_, std::max({step.bytes(), sorting.bytes(), open.bytes(), std::size_t{1}}));
   }
 
   DeviceState state() {
@@ -296,7 +296,8 @@ class DeviceStepper {
     }
     wall_ghosts_host_.assign(count, Vec3f{});
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.kind[i] == ParticleKind::Wall && p.id[i] < count) wall_ghosts_host_[p.id[i]] = p.ghost[i];
+      if (p.kind[i] == ParticleKind::Wall && p.id[i] < count)
+        wall_ghosts_host_[p.id[i]] = p.ghost[i];
     if (count > 0) Exec::upload(wall_ghosts_, wall_ghosts_host_.data(), count);
   }
   DeviceStart start() { return {svel_.data(), srho_.data()}; }

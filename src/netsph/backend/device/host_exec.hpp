@@ -1,23 +1,78 @@
 #pragma once
-// The host executor of the device-shaped step (device_stepper.hpp): buffers are std::vectors,
+// The host executor of the device-shaped step (device_stepper.hpp): buffers on the heap,
 // for_each an OpenMP loop, the sort a stable sort by key. It runs the device kernels' logic on
 // the CPU, so that tests check it against the CPU backend where there is no GPU; it is not a
 // fast path (the CPU backend is: backend/cpu/).
+//
+// It also plays a GPU's part where the host would hide a fault: new buffer storage is filled
+// with 0xFF bytes (NaN for floats, huge for integers), as memory from cudaMalloc holds
+// whatever was there, so a kernel that reads what nobody wrote goes wrong here too; and with
+// NETSPH_HOST_EXEC_ORDER=reverse or shuffle every launch visits its indices serially in that
+// order, so a kernel whose result depends on the order of its threads (one particle reading
+// what another writes in the same launch) differs (tests/physics/device_parity_test.cpp).
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <numeric>
+#include <random>
+#include <string_view>
 #include <vector>
 
 #include "netsph/core/real.hpp"
 
 namespace netsph {
 
+/// A device-like array on the host: the part of std::vector's interface the step uses; growth
+/// keeps the contents and fills the new storage with 0xFF bytes.
+template <class T>
+class HostBuffer {
+ public:
+  void resize(std::size_t n) {
+    if (n > v_.size()) {
+      const std::size_t old = v_.size();
+      v_.resize(n);
+      std::memset(static_cast<void*>(v_.data() + old), 0xFF, (n - old) * sizeof(T));
+    } else {
+      v_.resize(n);
+    }
+  }
+  T* data() { return v_.data(); }
+  const T* data() const { return v_.data(); }
+  std::size_t size() const { return v_.size(); }
+  std::size_t capacity() const { return v_.capacity(); }
+
+ private:
+  std::vector<T> v_;
+};
+
+/// The order of a launch's indices: 0 forward (in parallel), 1 reverse, 2 shuffled.
+inline int host_exec_order() {
+  const char* v = std::getenv("NETSPH_HOST_EXEC_ORDER");
+  if (v == nullptr) return 0;
+  const std::string_view s(v);
+  return s == "reverse" ? 1 : s == "shuffle" ? 2 : 0;
+}
+
 struct HostExec {
   template <class T>
-  using Buffer = std::vector<T>;
+  using Buffer = HostBuffer<T>;
 
   template <class F>
   static void for_each(std::size_t n, F f) {
+    const int order = host_exec_order();
+    if (order == 1) {
+      for (std::size_t i = n; i-- > 0;) f(static_cast<std::uint32_t>(i));
+      return;
+    }
+    if (order == 2) {
+      std::vector<std::uint32_t> idx(n);
+      std::iota(idx.begin(), idx.end(), 0u);
+      static std::mt19937 rng(20261202);
+      std::shuffle(idx.begin(), idx.end(), rng);
+      for (const std::uint32_t i : idx) f(i);
+      return;
+    }
     const auto count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static)
     for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::uint32_t>(i));
@@ -82,11 +137,12 @@ struct HostExec {
 
   template <class T>
   static void upload(Buffer<T>& b, const T* src, std::size_t n) {
-    b.assign(src, src + n);
+    b.resize(n);
+    if (n > 0) std::memcpy(static_cast<void*>(b.data()), src, n * sizeof(T));
   }
   template <class T>
   static void download(T* dst, const Buffer<T>& b, std::size_t n) {
-    std::copy(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n), dst);
+    if (n > 0) std::memcpy(static_cast<void*>(dst), b.data(), n * sizeof(T));
   }
 };
 
