@@ -1,14 +1,18 @@
 #include <omp.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "netsph/app/commands.hpp"
 #include "netsph/case/builtin_cases.hpp"
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/solver/memory_preflight.hpp"
 #if defined(NETSPH_HAVE_CUDA)
 #include "netsph/backend/cuda/cuda_runtime_info.hpp"
 #endif
@@ -77,6 +81,35 @@ std::string resolve_backend(const std::string& requested) {
   }
   throw Error("--backend",
               "unknown backend '" + requested + "'; allowed: auto, cpu, cuda, host-device");
+}
+
+void check_case_fits_memory(const CaseSpec& spec, const std::string& backend) {
+  if (const char* skip = std::getenv("NETSPH_SKIP_MEMORY_CHECK"); skip && skip[0] == '1') return;
+  const std::optional<double> available = available_memory();
+  if (!available) return;
+  // What a run holds per particle on the host: about 215-230 B on the CPU backend (measured:
+  // docs/PERFORMANCE.md, "Memory"); a device run keeps the particle state (61 B) and what the
+  // outputs copy back. Taken low, so that only a case that cannot fit is refused.
+  const double per_particle = backend == "cpu" ? 200.0 : 80.0;
+  const MemoryEstimate e = estimate_case_memory(spec, per_particle);
+  const auto gb = [](double b) { return b / 1e9; };
+  if (e.bytes > *available) {
+    throw Error(spec.source,
+                fmt::format("the case has about {:.2g} particles (fills and walls) and needs about "
+                            "{:.1f} GB of memory on the {} backend ({:.0f} B a particle), but "
+                            "this machine has {:.1f} GB available. Use a larger simulation.dp "
+                            "(memory falls as dp^-{}), a smaller domain or the case's reduced "
+                            "version, or run it over several machines (mpirun). "
+                            "NETSPH_SKIP_MEMORY_CHECK=1 skips this check",
+                            e.particles, gb(e.bytes), backend, per_particle, gb(*available),
+                            spec.simulation.dimensions));
+  }
+  if (e.bytes > 0.8 * *available) {
+    spdlog::warn(
+        "the case needs about {:.1f} GB of memory ({:.2g} particles), close to the "
+        "{:.1f} GB available",
+        gb(e.bytes), e.particles, gb(*available));
+  }
 }
 
 StepBackend step_backend(const std::string& resolved) {

@@ -23,6 +23,7 @@ int check_command(const CheckArgs& args) {
     return 0;
   }
   const std::string backend = resolve_backend(args.backend);
+  check_case_fits_memory(spec, backend);
   const auto built = std::chrono::steady_clock::now();
   Simulation sim(spec, step_backend(backend));
   log_scene(sim, std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());

@@ -176,6 +176,7 @@ int run_command(const RunArgs& args) {
   if (coll) {
     stepper = std::make_unique<DistributedStepper>(spec, *coll, restart ? &checkpoint : nullptr);
   } else {
+    check_case_fits_memory(spec, backend);
     sim = std::make_unique<Simulation>(spec, step_backend(backend));
     if (restart) sim->restore_state(checkpoint);
     stepper = std::make_unique<SingleStepper>(*sim);

@@ -83,5 +83,8 @@ int apply_threads(int threads);
 std::string resolve_backend(const std::string& requested);
 /// The Simulation backend of a resolved name.
 StepBackend step_backend(const std::string& resolved);
+/// Refuses a case whose particles (estimated from its boxes, solver/memory_preflight.hpp)
+/// cannot fit the memory available to one process, naming both; warns when it is close.
+void check_case_fits_memory(const CaseSpec& spec, const std::string& backend);
 
 }  // namespace netsph::app
