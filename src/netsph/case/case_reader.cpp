@@ -319,14 +319,11 @@ void CaseReader::read_viscosity(const TomlTableReader& fluid) {
     f.viscosity = fluid.to_choice("viscosity", *node, kViscosityModels);
     return;
   }
-  const auto* table = node->as_table();
-  if (!table) {
-    fluid.fail_value("viscosity", *node,
-                     fmt::format("must be \"artificial\", \"laminar\" or a table such as "
-                                 "{{ model = \"laminar\", kinematic_viscosity = 1e-6 }}, not {}",
-                                 type_name(*node)));
-  }
-  TomlTableReader r(*table, "fluid.viscosity", "fluid.viscosity", kViscosityKeys, source_);
+  const toml::table& table =
+      fluid.nested_table("viscosity", *node,
+                         "must be \"artificial\", \"laminar\" or a table such as { model = "
+                         "\"laminar\", kinematic_viscosity = 1e-6 }");
+  TomlTableReader r(table, "fluid.viscosity", "fluid.viscosity", kViscosityKeys, source_);
   f.viscosity = r.choice("model", kViscosityModels, f.viscosity);
   if (f.viscosity == ViscosityModel::Laminar) {
     reject_foreign_parameter(r, "alpha", "laminar", "\"artificial\"", "model, kinematic_viscosity");
@@ -346,14 +343,11 @@ void CaseReader::read_density_diffusion(const TomlTableReader& fluid) {
     f.density_diffusion = fluid.to_choice("density_diffusion", *node, kDiffusionModels);
     return;
   }
-  const auto* table = node->as_table();
-  if (!table) {
-    fluid.fail_value("density_diffusion", *node,
-                     fmt::format("must be \"none\", \"molteni\", \"fourtakas\" or a table such "
-                                 "as {{ model = \"molteni\", delta = 0.1 }}, not {}",
-                                 type_name(*node)));
-  }
-  TomlTableReader r(*table, "fluid.density_diffusion", "fluid.density_diffusion", kDiffusionKeys,
+  const toml::table& table =
+      fluid.nested_table("density_diffusion", *node,
+                         "must be \"none\", \"molteni\", \"fourtakas\" or a table such as { model "
+                         "= \"molteni\", delta = 0.1 }");
+  TomlTableReader r(table, "fluid.density_diffusion", "fluid.density_diffusion", kDiffusionKeys,
                     source_);
   f.density_diffusion = r.choice("model", kDiffusionModels, f.density_diffusion);
   if (f.density_diffusion == DensityDiffusion::None) {
@@ -372,14 +366,10 @@ void CaseReader::read_shifting(const TomlTableReader& fluid) {
     f.shifting = fluid.to_choice("shifting", *node, kShiftingModels);
     return;
   }
-  const auto* table = node->as_table();
-  if (!table) {
-    fluid.fail_value("shifting", *node,
-                     fmt::format("must be \"none\", \"fickian\" or a table such as "
-                                 "{{ model = \"fickian\", coefficient = 2.0 }}, not {}",
-                                 type_name(*node)));
-  }
-  TomlTableReader r(*table, "fluid.shifting", "fluid.shifting", kShiftingKeys, source_);
+  const toml::table& table = fluid.nested_table("shifting", *node,
+                                                "must be \"none\", \"fickian\" or a table such as "
+                                                "{ model = \"fickian\", coefficient = 2.0 }");
+  TomlTableReader r(table, "fluid.shifting", "fluid.shifting", kShiftingKeys, source_);
   // Parameters only exist for "fickian", so a table without a model means it.
   f.shifting = r.choice("model", kShiftingModels, ShiftingModel::Fickian);
   if (f.shifting == ShiftingModel::None) {
@@ -540,16 +530,13 @@ void CaseReader::read_output() {
 void CaseReader::read_snapshot_region(const TomlTableReader& r) {
   const toml::node* node = r.find("snapshot_region");
   if (!node) return;
-  const auto* table = node->as_table();
-  if (!table) {
-    r.fail_value("snapshot_region", *node,
-                 fmt::format("must be a table such as {{ min = [x, y, z], max = [x, y, z] }} (the "
-                             "box whose particles the snapshots hold, m), not {}",
-                             type_name(*node)));
-  }
+  const toml::table& table =
+      r.nested_table("snapshot_region", *node,
+                     "must be a table such as { min = [x, y, z], max = [x, y, z] } (the box whose "
+                     "particles the snapshots hold, m)");
   static const std::vector<std::string_view> keys = {"min", "max"};
   const std::string path = r.key_path("snapshot_region");
-  TomlTableReader t(*table, path, path, keys, source_);
+  TomlTableReader t(table, path, path, keys, source_);
   const BoxSpec box = read_box(t, "the snapshot region");
   const DomainSpec& d = spec_.domain;
   if (d.given) {

@@ -358,15 +358,11 @@ Vec3d CaseReader::read_direction(const TomlTableReader& r, std::string_view key,
 
 Quat CaseReader::read_rotation(const TomlTableReader& r) const {
   const toml::node& node = *r.find("rotation");
-  const auto* table = node.as_table();
-  if (!table) {
-    r.fail_value("rotation", node,
-                 fmt::format("must be a table such as {{ axis = [0, 0, 1], angle = 30 }} (a "
-                             "turn in degrees about a world axis), not {}",
-                             type_name(node)));
-  }
+  const toml::table& table = r.nested_table("rotation", node,
+                                            "must be a table such as { axis = [0, 0, 1], angle = "
+                                            "30 } (a turn in degrees about a world axis)");
   const std::string path = r.key_path("rotation");
-  TomlTableReader t(*table, path, path, kRotationKeys, source_);
+  TomlTableReader t(table, path, path, kRotationKeys, source_);
   const Vec3d axis = read_direction(
       t, "axis", t.require("axis", "the world axis [x, y, z] to turn about, non-zero"), true,
       "a rotation in 2D turns about y so that the body stays in the x-z plane");
@@ -443,15 +439,11 @@ VelocityHistory CaseReader::read_velocity_history(const TomlTableReader& r,
     return history;
   }
   if (!node) return history;
-  const auto* table = node->as_table();
-  if (!table) {
-    r.fail_value(history_key, *node,
-                 fmt::format("must be a table such as {{ times = [0, 1], velocities = "
-                             "[[0, 0, 0], [0.5, 0, 0]] }}, not {}",
-                             type_name(*node)));
-  }
+  const toml::table& table = r.nested_table(
+      history_key, *node,
+      "must be a table such as { times = [0, 1], velocities = [[0, 0, 0], [0.5, 0, 0]] }");
   const std::string path = r.key_path(history_key);
-  TomlTableReader m(*table, path, path, kHistoryKeys, source_);
+  TomlTableReader m(table, path, path, kHistoryKeys, source_);
   const toml::node& times = m.require("times", "instants in s, >= 0, strictly increasing");
   history.times = m.to_number_array("times", times, NumberRule::non_negative("s"), 1);
   check_increasing(m, "times", times, history.times);

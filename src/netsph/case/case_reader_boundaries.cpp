@@ -133,15 +133,11 @@ VelocityHistory CaseReader::read_wall_motion(const TomlTableReader& r) const {
     return motion;
   }
   if (!node) return motion;
-  const auto* table = node->as_table();
-  if (!table) {
-    r.fail_value("motion", *node,
-                 fmt::format("must be a table such as {{ times = [0, 1], velocities = "
-                             "[[0, 0, 0], [0.5, 0, 0]] }}, not {}",
-                             type_name(*node)));
-  }
+  const toml::table& table = r.nested_table(
+      "motion", *node,
+      "must be a table such as { times = [0, 1], velocities = [[0, 0, 0], [0.5, 0, 0]] }");
   const std::string path = r.key_path("motion");
-  TomlTableReader m(*table, path, path, kMotionKeys, source_);
+  TomlTableReader m(table, path, path, kMotionKeys, source_);
   const toml::node& times = m.require("times", "instants in s, >= 0, strictly increasing");
   motion.times = m.to_number_array("times", times, NumberRule::non_negative("s"), 1);
   check_increasing(m, "times", times, motion.times);
@@ -330,13 +326,9 @@ void CaseReader::read_open_velocity(const TomlTableReader& r, bool inlet,
 
 void CaseReader::read_profile(const TomlTableReader& r, OpenBoundarySpec& ob) const {
   const toml::node& node = *r.find("profile");
-  const auto* table = node.as_table();
-  if (!table) {
-    r.fail_value("profile", node,
-                 fmt::format("must be a table such as {{ z = [0, 0.3], u = [0.4, 0.6] }} "
-                             "(heights in m, speeds in m/s), not {}",
-                             type_name(node)));
-  }
+  const toml::table& table = r.nested_table(
+      "profile", node,
+      "must be a table such as { z = [0, 0.3], u = [0.4, 0.6] } (heights in m, speeds in m/s)");
   if (ob.face == kZMin || ob.face == kZMax) {
     r.fail_value(
         "profile", node,
@@ -345,7 +337,7 @@ void CaseReader::read_profile(const TomlTableReader& r, OpenBoundarySpec& ob) co
                     is_2d() ? "xmin or xmax" : "xmin, xmax, ymin or ymax", kFaceNames[ob.face]));
   }
   const std::string path = r.key_path("profile");
-  TomlTableReader p(*table, path, path, kProfileKeys, source_);
+  TomlTableReader p(table, path, path, kProfileKeys, source_);
   const toml::node& z = p.require("z", "heights in m, at least 2, strictly increasing");
   ob.profile_z = p.to_number_array("z", z, NumberRule::any("m"), 2);
   check_increasing(p, "z", z, ob.profile_z);

@@ -233,15 +233,12 @@ void CaseReader::read_net_edges(const TomlTableReader& r, NetSpec& net) const {
 void CaseReader::read_net_sinker(const TomlTableReader& r, NetSpec& net) const {
   const toml::node* node = r.find("sinker");
   if (!node) return;
-  const auto* table = node->as_table();
-  if (!table) {
-    r.fail_value("sinker", *node,
-                 fmt::format("must be a table such as {{ length = 0.3, diameter = 0.006, density "
-                             "= 8610 }} (a bar along the bottom edge), not {}",
-                             type_name(*node)));
-  }
+  const toml::table& table =
+      r.nested_table("sinker", *node,
+                     "must be a table such as { length = 0.3, diameter = 0.006, density = 8610 } "
+                     "(a bar along the bottom edge)");
   const std::string path = r.key_path("sinker");
-  TomlTableReader t(*table, path, path, kSinkerKeys, source_);
+  TomlTableReader t(table, path, path, kSinkerKeys, source_);
   SinkerSpec& s = net.sinker;
   s.length = t.number("length", NumberRule::positive("m"), net.width);
   s.diameter = t.required_number("diameter", NumberRule::positive("m"), "bar diameter, m, > 0");

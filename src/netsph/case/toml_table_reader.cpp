@@ -289,6 +289,13 @@ void TomlTableReader::fail_value(std::string_view key, const toml::node& value,
               fmt::format("{} = {}: {}", key_path(key), format_value(value), message));
 }
 
+const toml::table& TomlTableReader::nested_table(std::string_view key, const toml::node& value,
+                                                 std::string_view expected) const {
+  const auto* table = value.as_table();
+  if (!table) fail_value(key, value, fmt::format("{}, not {}", expected, type_name(value)));
+  return *table;
+}
+
 void TomlTableReader::fail_table(std::string_view message) const {
   throw Error(source_.where(table_.source()), std::string(message));
 }

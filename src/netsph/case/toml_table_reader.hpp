@@ -166,6 +166,10 @@ class TomlTableReader {
                                std::string_view message, const toml::node* at = nullptr) const;
   /// Throws `message` at the position of the table.
   [[noreturn]] void fail_table(std::string_view message) const;
+  /// The inline table `value` of `key`; anything else throws "<key path> = <value>:
+  /// <expected>, not <its type>" (expected: "must be a table such as { ... }").
+  const toml::table& nested_table(std::string_view key, const toml::node& value,
+                                  std::string_view expected) const;
 
  private:
   void reject_unknown_keys(UnknownKeyHint hint) const;

@@ -229,17 +229,16 @@ class DeviceStepper {
     Exec::download(p.id.data(), id_, n_);
     Exec::download(p.group.data(), group_, n_);
     p.next_id = next_id_;
-    // The ghost vectors, as device_solid_ghost gives them.
-    p.ghost.assign(n_, Vec3f{});
-    for (std::size_t i = 0; i < n_; ++i) {
-      if (p.kind[i] == ParticleKind::Wall && p.id[i] < wall_ghosts_host_.size()) {
-        p.ghost[i] = wall_ghosts_host_[p.id[i]];
-      } else if (p.kind[i] == ParticleKind::Body) {
-        const DeviceBody& b = s_.bodies[p.group[i]];
-        p.ghost[i] = rigid_ghost(b.state, s_.body_ghosts[b.offset_base + (p.id[i] - b.first_id)],
-                                 s_.model.dims);
-      }
-    }
+    // The ghost vectors from the host's copies of the solids' tables, by the device's function.
+    p.ghost.resize(n_);
+    const DeviceState host{p.pos.data(),  p.vel.data(), p.rho.data(),
+                           p.kind.data(), p.id.data(),  p.group.data()};
+    const DeviceGhosts tables{wall_ghosts_host_.data(),
+                              static_cast<std::uint32_t>(wall_ghosts_host_.size()),
+                              s_.body_ghosts.data(), s_.model.dims};
+    for (std::size_t i = 0; i < n_; ++i)
+      p.ghost[i] =
+          device_solid_ghost(host, s_.bodies.data(), tables, static_cast<std::uint32_t>(i));
   }
 
   double time() const { return time_; }
