@@ -14,7 +14,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "case_runs.hpp"
 #include "netsph/io/checkpoint_file.hpp"
@@ -31,6 +34,19 @@ namespace {
 
 using test::Difference;
 using test::expect_parity;
+
+/// Sets an environment variable for its scope (the device step reads its knobs when it is
+/// built).
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) { setenv(name, value, 1); }
+  ~ScopedEnv() { unsetenv(name_); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+};
 
 Difference compare(const std::string& name, const std::vector<std::string>& overrides, int steps,
                    StepBackend backend) {
@@ -119,18 +135,10 @@ TEST(DeviceParity, HostCoupledNetMatchesTheCpuBackend) {
 // (and, always, uninitialised device memory as 0xFF bytes: host_exec.hpp), as a GPU runs them
 // in no fixed order: a kernel in which one particle reads what another writes in the same
 // launch would differ here, where the parallel forward loop above happens to agree.
-class HostExecOrder {
- public:
-  explicit HostExecOrder(const char* order) { setenv("NETSPH_HOST_EXEC_ORDER", order, 1); }
-  ~HostExecOrder() { unsetenv("NETSPH_HOST_EXEC_ORDER"); }
-  HostExecOrder(const HostExecOrder&) = delete;
-  HostExecOrder& operator=(const HostExecOrder&) = delete;
-};
-
 TEST(DeviceParity, HostInReverseAndShuffledOrderMatchesTheCpuBackend) {
   for (const char* order : {"reverse", "shuffle"}) {
     SCOPED_TRACE(order);
-    const HostExecOrder scoped(order);
+    const ScopedEnv scoped("NETSPH_HOST_EXEC_ORDER", order);
     // Open boundaries (creation, removal, the scans), mDBC walls, a body and the knot-spring
     // coupling, periodic walls: the kernels a GPU runs, each in a case that needs it.
     expect_parity(compare("net_tethered_knot.toml", {}, 15, StepBackend::HostDevice));
@@ -138,6 +146,61 @@ TEST(DeviceParity, HostInReverseAndShuffledOrderMatchesTheCpuBackend) {
     expect_parity(compare("sinking_box2d.toml", kBoxOnFloor, 60, StepBackend::HostDevice));
     expect_parity(compare("poiseuille2d.toml", kPoiseuille, 60, StepBackend::HostDevice));
   }
+}
+
+// The rates pass gathers a batch of neighbours before summing them (device_rates_particle,
+// for a GPU warp's sake); the neighbours, their order and so the sums must be the same for
+// every batch size, bit for bit, as for the loop that sums each pair where it finds it
+// (batch 0). A batch that ends inside a range, on a range's last candidate or across a
+// periodic boundary (x in Poiseuille, y in the 3D channel) each resume the scan differently.
+void expect_same_for_every_batch(const std::string& name, const std::vector<std::string>& overrides,
+                                 int steps) {
+  SCOPED_TRACE(name);
+  const CaseSpec spec = test::load_case(name, overrides);
+  std::optional<Simulation> unbatched;
+  {
+    const ScopedEnv scoped("NETSPH_RATES_BATCH", "0");
+    unbatched.emplace(spec, StepBackend::HostDevice);
+  }
+  for (int s = 0; s < steps; ++s) unbatched->step();
+  for (const char* size : {"1", "3", "32"}) {
+    SCOPED_TRACE(std::string("batch ") + size);
+    const ScopedEnv scoped("NETSPH_RATES_BATCH", size);
+    Simulation batched(spec, StepBackend::HostDevice);
+    for (int s = 0; s < steps; ++s) batched.step();
+    const Difference d = test::state_difference(*unbatched, batched);
+    EXPECT_EQ(d.pos, 0.0);
+    EXPECT_EQ(d.vel, 0.0);
+    EXPECT_EQ(d.rho, 0.0);
+    EXPECT_EQ(d.body_force, 0.0);
+  }
+}
+
+TEST(DeviceParity, HostRatesAreTheSameForEveryBatchSize) {
+  expect_same_for_every_batch("poiseuille2d.toml", kPoiseuille, 30);
+  expect_same_for_every_batch("channel3d.toml", {}, 10);
+  expect_same_for_every_batch("net_tethered_knot.toml", {}, 10);
+}
+
+void expect_environment_error(const char* name, const char* value, const std::string& message) {
+  const CaseSpec spec = test::load_case("poiseuille2d.toml", kPoiseuille);
+  const ScopedEnv scoped(name, value);
+  try {
+    Simulation sim(spec, StepBackend::HostDevice);
+    ADD_FAILURE() << name << "=" << value << " was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+  }
+}
+
+TEST(DeviceParity, RatesKernelSettingsOutsideTheirRangeAreAClearError) {
+  expect_environment_error("NETSPH_RATES_BATCH", "33",
+                           "NETSPH_RATES_BATCH is '33': it must be a whole number from 0 (no "
+                           "batches) to 32");
+  expect_environment_error("NETSPH_RATES_BATCH", "8x", "NETSPH_RATES_BATCH is '8x'");
+  expect_environment_error("NETSPH_RATES_MAX_REGISTERS", "48",
+                           "NETSPH_RATES_MAX_REGISTERS is '48': it must be a whole number 0 (no "
+                           "cap) or 64");
 }
 
 // The whole run on the device step: outputs (snapshots, series, probes, nets, summary.json)
@@ -229,6 +292,19 @@ std::string gpu_unavailable() {
 #else
   return "netsph was built without CUDA";
 #endif
+}
+
+// The rates kernel's variants a GPU session measures (device_rates_particle's batches,
+// the register cap): each must match the CPU as the default does. Poiseuille: periodic x.
+TEST(DeviceParity, CudaRatesKernelVariantsMatchTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  for (const auto& [name, value] :
+       {std::pair{"NETSPH_RATES_BATCH", "0"}, std::pair{"NETSPH_RATES_BATCH", "1"},
+        std::pair{"NETSPH_RATES_MAX_REGISTERS", "64"}}) {
+    SCOPED_TRACE(std::string(name) + "=" + value);
+    const ScopedEnv scoped(name, value);
+    expect_parity(compare("poiseuille2d.toml", kPoiseuille, 100, StepBackend::Cuda));
+  }
 }
 
 TEST(DeviceParity, CudaDamBreak2DMatchesTheCpuBackend) {

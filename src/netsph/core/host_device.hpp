@@ -6,3 +6,11 @@
 #else
 #define NETSPH_HD inline
 #endif
+
+// A lambda the compiler must inline: GCC does not always inline a large lambda called from
+// two places, and then its captures go through memory (nvcc inlines device lambdas itself).
+#if defined(__CUDACC__)
+#define NETSPH_INLINE_LAMBDA
+#else
+#define NETSPH_INLINE_LAMBDA __attribute__((always_inline))
+#endif

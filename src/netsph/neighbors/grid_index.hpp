@@ -18,6 +18,17 @@
 
 namespace netsph {
 
+/// Where a scan of a cell's candidate ranges stands (GridIndex::first_range, next_range): the
+/// current range [b, e) of sorted indices and the shift its particles' positions take across
+/// periodic boundaries.
+struct RangeCursor {
+  std::uint32_t b = 0, e = 0;
+  Vec3f shift{};
+  int cx = 0, cy = 0, cz = 0;   ///< the cell searched around
+  int dz = 0, dy = 0, run = 0;  ///< the range's z and y rows and x run (0, 1, 2)
+  NETSPH_HD bool done() const { return b == e; }
+};
+
 struct GridIndex {
   static constexpr int kSearchCells = 2;  ///< CellGrid::kSearchCells
   Vec3d origin{};
@@ -75,56 +86,86 @@ struct GridIndex {
     return q;
   }
 
-  /// Calls visit(begin, end, shift) for every non-empty candidate range of cell `c`, in the
-  /// order of CellGrid::neighbour_ranges (z rows, then y rows, then the x runs).
-  template <class Visit>
-  NETSPH_HD void for_each_range(const std::uint32_t* cell_begin, std::uint32_t c,
-                                Visit&& visit) const {
+  /// The first non-empty candidate range of cell `c` (done() if it has none). With
+  /// next_range, a scan that must stop and resume (device_rates_particle gathers a batch of
+  /// neighbours, sums it, then scans on); for_each_range is the whole scan in one call.
+  NETSPH_HD RangeCursor first_range(const std::uint32_t* cell_begin, std::uint32_t c) const {
     const std::uint32_t nx = static_cast<std::uint32_t>(n[0]);
     const std::uint32_t nxy = nx * static_cast<std::uint32_t>(n[1]);
-    const int ic[3] = {static_cast<int>(c % nx), static_cast<int>((c / nx) % n[1]),
-                       static_cast<int>(c / nxy)};
-    // x: one run, split in two where it crosses a periodic boundary.
-    int xlo[3], xhi[3];
-    float xshift[3];
-    int nxr = 0;
-    const int x0 = ic[0] - kSearchCells, x1 = ic[0] + kSearchCells;
-    const int xmin = x0 > 0 ? x0 : 0, xmax = x1 < n[0] - 1 ? x1 : n[0] - 1;
-    if (periodic[0] && x0 < 0) {
-      xlo[nxr] = x0 + n[0], xhi[nxr] = n[0] - 1, xshift[nxr++] = static_cast<float>(-period[0]);
-    }
-    xlo[nxr] = xmin, xhi[nxr] = xmax, xshift[nxr++] = 0.0f;
-    if (periodic[0] && x1 >= n[0]) {
-      xlo[nxr] = 0, xhi[nxr] = x1 - n[0], xshift[nxr++] = static_cast<float>(period[0]);
-    }
+    RangeCursor r;
+    r.cx = static_cast<int>(c % nx), r.cy = static_cast<int>((c / nx) % n[1]);
+    r.cz = static_cast<int>(c / nxy);
+    r.dz = -kSearchCells, r.dy = dims == 2 ? 0 : -kSearchCells, r.run = -1;
+    next_range(cell_begin, r);
+    return r;
+  }
+
+  /// Moves r to the next non-empty candidate range, in the order of
+  /// CellGrid::neighbour_ranges: z rows, then y rows, then the x runs (the part wrapped from
+  /// the low end of a periodic x axis, the run inside the grid, the part wrapped from the high
+  /// end). r is done() after the last.
+  NETSPH_HD void next_range(const std::uint32_t* cell_begin, RangeCursor& r) const {
     const int rz = kSearchCells, ry = dims == 2 ? 0 : kSearchCells;
-    for (int dz = -rz; dz <= rz; ++dz) {
-      int iz = ic[2] + dz;
+    const int x0 = r.cx - kSearchCells, x1 = r.cx + kSearchCells;
+    for (;;) {
+      if (++r.run > 2) {
+        r.run = 0;
+        if (++r.dy > ry) {
+          r.dy = -ry;
+          if (++r.dz > rz) {
+            r.b = r.e = 0;
+            return;
+          }
+        }
+      }
+      int lo, hi;
+      float sx = 0;
+      if (r.run == 0) {
+        if (!(periodic[0] && x0 < 0)) continue;
+        lo = x0 + n[0], hi = n[0] - 1, sx = static_cast<float>(-period[0]);
+      } else if (r.run == 1) {
+        lo = x0 > 0 ? x0 : 0, hi = x1 < n[0] - 1 ? x1 : n[0] - 1;
+      } else {
+        if (!(periodic[0] && x1 >= n[0])) continue;
+        lo = 0, hi = x1 - n[0], sx = static_cast<float>(period[0]);
+      }
+      int iz = r.cz + r.dz;
       float sz = 0;
       if (periodic[2]) {
         if (iz < 0) iz += n[2], sz = static_cast<float>(-period[2]);
         if (iz >= n[2]) iz -= n[2], sz = static_cast<float>(period[2]);
       } else if (iz < 0 || iz >= n[2]) {
+        r.dy = ry, r.run = 2;  // the whole z row is outside: on to the next
         continue;
       }
-      for (int dy = -ry; dy <= ry; ++dy) {
-        int iy = ic[1] + dy;
-        float sy = 0;
-        if (periodic[1]) {
-          if (iy < 0) iy += n[1], sy = static_cast<float>(-period[1]);
-          if (iy >= n[1]) iy -= n[1], sy = static_cast<float>(period[1]);
-        } else if (iy < 0 || iy >= n[1]) {
-          continue;
-        }
-        const std::uint32_t row =
-            nx * static_cast<std::uint32_t>(iy) + nxy * static_cast<std::uint32_t>(iz);
-        for (int k = 0; k < nxr; ++k) {
-          const std::uint32_t b = cell_begin[row + static_cast<std::uint32_t>(xlo[k])];
-          const std::uint32_t e = cell_begin[row + static_cast<std::uint32_t>(xhi[k]) + 1];
-          if (b < e) visit(b, e, Vec3f(xshift[k], sy, sz));
-        }
+      int iy = r.cy + r.dy;
+      float sy = 0;
+      if (periodic[1]) {
+        if (iy < 0) iy += n[1], sy = static_cast<float>(-period[1]);
+        if (iy >= n[1]) iy -= n[1], sy = static_cast<float>(period[1]);
+      } else if (iy < 0 || iy >= n[1]) {
+        r.run = 2;  // the whole y row is outside
+        continue;
+      }
+      const std::uint32_t row = static_cast<std::uint32_t>(n[0]) *
+                                (static_cast<std::uint32_t>(iy) +
+                                 static_cast<std::uint32_t>(n[1]) * static_cast<std::uint32_t>(iz));
+      const std::uint32_t b = cell_begin[row + static_cast<std::uint32_t>(lo)];
+      const std::uint32_t e = cell_begin[row + static_cast<std::uint32_t>(hi) + 1];
+      if (b < e) {
+        r.b = b, r.e = e, r.shift = Vec3f(sx, sy, sz);
+        return;
       }
     }
+  }
+
+  /// Calls visit(begin, end, shift) for every non-empty candidate range of cell `c`, in the
+  /// order of next_range.
+  template <class Visit>
+  NETSPH_HD void for_each_range(const std::uint32_t* cell_begin, std::uint32_t c,
+                                Visit&& visit) const {
+    for (RangeCursor r = first_range(cell_begin, c); !r.done(); next_range(cell_begin, r))
+      visit(r.b, r.e, r.shift);
   }
 };
 

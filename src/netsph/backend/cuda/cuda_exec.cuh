@@ -21,8 +21,20 @@ inline void cuda_check(cudaError_t err, const char* what) {
   if (err != cudaSuccess) throw Error("cuda", std::string(what) + ": " + cudaGetErrorString(err));
 }
 
+/// Threads per block of every launch.
+inline constexpr unsigned kCudaBlock = 256;
+
 template <class F>
 __global__ void for_each_kernel(std::uint32_t n, F f) {
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < n) f(i);
+}
+
+/// for_each_kernel compiled to keep MinBlocks blocks resident on a multiprocessor: the
+/// compiler caps its registers at 65536 / (kCudaBlock * MinBlocks), spilling if it must.
+template <unsigned MinBlocks, class F>
+__global__ void __launch_bounds__(kCudaBlock, MinBlocks)
+    for_each_bounded_kernel(std::uint32_t n, F f) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i < n) f(i);
 }
@@ -94,13 +106,27 @@ class DeviceBuffer {
 struct CudaExec {
   template <class T>
   using Buffer = DeviceBuffer<T>;
-  static constexpr unsigned kBlock = 256;
+  static constexpr unsigned kBlock = kCudaBlock;
 
   template <class F>
   static void for_each(std::size_t n, F f) {
     if (n == 0) return;
     const auto blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
     for_each_kernel<<<blocks, kBlock>>>(static_cast<std::uint32_t>(n), f);
+    checked_launch();
+  }
+
+  /// for_each with at most 65536 / (256 MinBlocks) registers a thread, so that MinBlocks
+  /// blocks fit on a multiprocessor (more threads to hide memory latency, perhaps spills).
+  template <unsigned MinBlocks, class F>
+  static void for_each_occupying(std::size_t n, F f) {
+    if (n == 0) return;
+    const auto blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
+    for_each_bounded_kernel<MinBlocks><<<blocks, kBlock>>>(static_cast<std::uint32_t>(n), f);
+    checked_launch();
+  }
+
+  static void checked_launch() {
     cuda_check(cudaGetLastError(), "kernel launch");
     if (sync_each_launch()) cuda_check(cudaDeviceSynchronize(), "kernel (NETSPH_CUDA_SYNC)");
   }

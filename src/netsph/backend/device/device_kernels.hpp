@@ -149,13 +149,33 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
   }
 }
 
+/// The most neighbours a rates pass gathers before summing them (device_rates_particle).
+inline constexpr std::uint32_t kRatesBatchMax = 32;
+
+/// The periodic shift that brings a neighbour at offset d (along one axis) within reach: the
+/// nearest image. A neighbour is within the support (< period / 2.5, CellGrid) through exactly
+/// one shift, the one GridIndex::next_range gave its range. period 0: not periodic.
+NETSPH_HD Real nearest_image_shift(Real d, Real period) {
+  if (!(period > 0)) return 0;
+  return d > Real(0.5) * period ? period : (d < Real(-0.5) * period ? -period : Real(0));
+}
+
 /// Rates of particle a: fluid particles sum every neighbour (fluid_pair_rates), wall particles
 /// the fluid ones (boundary_pair_rates), as backend/cpu/rates.cpp.
+///
+/// The scan gathers up to `batch` neighbours (at most kRatesBatchMax), then sums them, then
+/// scans on (batch 0: each pair is summed where it is found). Why: the 32 threads of a GPU warp
+/// execute together, and about a quarter of the candidates in the 125 cells of size h around a
+/// particle are neighbours. Summing each pair where the scan finds it (DualSPHysics' loop) runs the
+/// pair terms whenever any thread of the warp has just found one, with most threads idle, so the
+/// warp pays the pair terms for nearly every candidate. Gathered first, every thread of the warp
+/// has a batch to sum and the warp pays them for about one candidate in four. The neighbours, their
+/// order and the sums are those of a single loop, whatever the batch size.
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                      const std::uint32_t* keys, const ParticleKind* kind,
                                      const DeviceView& v, const FluidModel& m,
-                                     const DeviceRates& out, std::uint32_t a) {
+                                     const DeviceRates& out, std::uint32_t a, std::uint32_t batch) {
   const ParticleKind ka = kind[a];
   const PosPress pa = v.pp[a];
   const Real xa = pa.x, ya = pa.y, za = pa.z, press_a = pa.p;
@@ -166,52 +186,87 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
   // A body sees gauge pressures (backend/cpu/rates.cpp, body_sums, says why).
   const Real p_bg = m.eos.p_background;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0, gx = 0, gy = 0, gz = 0, div = 0;
-  if (ka != ParticleKind::Buffer) {
+  const Real px = static_cast<Real>(g.period[0]), py = static_cast<Real>(g.period[1]),
+             pz = static_cast<Real>(g.period[2]);
+  // Neighbour b at offset (dx, dy, dz), squared distance r2.
+  const auto add_pair = [&](std::uint32_t b, Real dx, Real dy, Real dz,
+                            Real r2) NETSPH_INLINE_LAMBDA {
+    const Real fluid_b = carries_fluid(kind[b]) ? Real(1) : Real(0);
+    if (fluid_a) {
+      const Neighbour nb{{dx, dy, dz},
+                         r2,
+                         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
+                         {vxa - v.cvx[b], vya - v.cvy[b], vza - v.cvz[b]},
+                         v.rho[b],
+                         v.pp[b].p,
+                         m.mass,
+                         fluid_b};
+      const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
+      ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
+      vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
+      if constexpr (Shift) {
+        const Real vf = m.mass / v.rho[b] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
+        gx += vf * dx, gy += vf * dy, gz += vf * dz;
+        div -= vf * r2;
+      }
+    } else if (fluid_b > Real(0)) {
+      // A solid sees its fluid neighbours with its own velocity in continuity; a body
+      // also takes their force, with gauge pressures.
+      const Real p_off = body_a ? p_bg : Real(0);
+      const Neighbour nb{{dx, dy, dz},
+                         r2,
+                         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
+                         {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
+                         v.rho[b],
+                         v.pp[b].p - p_off,
+                         m.mass,
+                         fluid_b};
+      const PairRates s = body_a ? fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(
+                                       m, rho_a, press_a - p_off, nb)
+                                 : boundary_pair_rates<Kernel>(m, nb);
+      ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
+      vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
+    }
+  };
+  if (ka == ParticleKind::Buffer) {
+    // Buffers have no rates.
+  } else if (batch == 0) {
+    // Each pair summed where the scan finds it: kept to measure the batches against.
     g.for_each_range(cell_begin, keys[a], [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
-      const Real xs = xa - shift.x, ys = ya - shift.y, zs = za - shift.z;
       for (std::uint32_t b = b0; b < b1; ++b) {
         const PosPress pb = v.pp[b];
-        const Real dx = xs - pb.x, dy = ys - pb.y, dz = zs - pb.z;
+        const Real dx = (xa - shift.x) - pb.x, dy = (ya - shift.y) - pb.y,
+                   dz = (za - shift.z) - pb.z;
         const Real r2 = dx * dx + dy * dy + dz * dz;
-        if (!(r2 < m.support2) || b == a) continue;
-        const Real fluid_b = carries_fluid(kind[b]) ? Real(1) : Real(0);
-        if (fluid_a) {
-          const Neighbour nb{{dx, dy, dz},
-                             r2,
-                             {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                             {vxa - v.cvx[b], vya - v.cvy[b], vza - v.cvz[b]},
-                             v.rho[b],
-                             pb.p,
-                             m.mass,
-                             fluid_b};
-          const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
-          ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
-          vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
-          if constexpr (Shift) {
-            const Real vf = m.mass / v.rho[b] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
-            gx += vf * dx, gy += vf * dy, gz += vf * dz;
-            div -= vf * r2;
-          }
-        } else if (fluid_b > Real(0)) {
-          // A solid sees its fluid neighbours with its own velocity in continuity; a body
-          // also takes their force, with gauge pressures.
-          const Real p_off = body_a ? p_bg : Real(0);
-          const Neighbour nb{{dx, dy, dz},
-                             r2,
-                             {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                             {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
-                             v.rho[b],
-                             pb.p - p_off,
-                             m.mass,
-                             fluid_b};
-          const PairRates s = body_a ? fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(
-                                           m, rho_a, press_a - p_off, nb)
-                                     : boundary_pair_rates<Kernel>(m, nb);
-          ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
-          vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
-        }
+        if (r2 < m.support2 && b != a) add_pair(b, dx, dy, dz, r2);
       }
     });
+  } else {
+    std::uint32_t hits[kRatesBatchMax];
+    RangeCursor r = g.first_range(cell_begin, keys[a]);
+    std::uint32_t b = r.b;
+    while (!r.done()) {
+      std::uint32_t found = 0;
+      do {
+        const PosPress pb = v.pp[b];
+        const Real dx = (xa - r.shift.x) - pb.x, dy = (ya - r.shift.y) - pb.y,
+                   dz = (za - r.shift.z) - pb.z;
+        const Real r2 = dx * dx + dy * dy + dz * dz;
+        if (r2 < m.support2 && b != a) hits[found++] = b;
+        if (++b == r.e) {
+          g.next_range(cell_begin, r);
+          b = r.b;
+        }
+      } while (found < batch && !r.done());
+      for (std::uint32_t k = 0; k < found; ++k) {
+        const std::uint32_t nb = hits[k];
+        const PosPress pb = v.pp[nb];
+        const Real dx = (xa - nearest_image_shift(xa - pb.x, px)) - pb.x,
+                   dy = (ya - nearest_image_shift(ya - pb.y, py)) - pb.y,
+                   dz = (za - nearest_image_shift(za - pb.z, pz)) - pb.z;
+        add_pair(nb, dx, dy, dz, dx * dx + dy * dy + dz * dz);
+      }
+    }
   }
   if (fluid_a) {
     const Vec3f total{ax + m.gravity.x, ay + m.gravity.y, az + m.gravity.z};

@@ -32,7 +32,9 @@
 // keys_alt, vals, vals_alt, n, key_bits) -> whether the sorted pairs are in the _alt buffers
 // (CUB's double-buffer sort, which needs no O(n) temporary storage), max_of(const T*, n),
 // count_below(const uint32*, n, bound), exclusive_scan(const uint32* in, uint32* out, n) ->
-// total, upload(Buffer<T>&, const T*, n), download(T*, const Buffer<T>&, n), and
+// total, upload(Buffer<T>&, const T*, n), download(T*, const Buffer<T>&, n),
+// for_each_occupying<MinBlocks>(n, f) (for_each with registers capped for MinBlocks blocks of
+// 256 threads a multiprocessor; a plain for_each on the host), and
 // atomic_add(double*, double) callable inside f, and synchronize() (waits for the device; for
 // the phase profile). f must be a NETSPH_LAMBDA: on CUDA it runs on the device.
 #include <algorithm>
@@ -77,6 +79,12 @@ struct DeviceSetup {
   std::vector<DeviceBody> bodies;            ///< by body index, with their initial states
   std::vector<Vec3f> body_offsets, body_ghosts;  ///< body frame, by DeviceBody::offset_base + k
   ContactModel contact;
+  /// Neighbours a rates pass gathers before summing them, 0 (none: each pair summed where it
+  /// is found) to kRatesBatchMax (device_rates_particle; NETSPH_RATES_BATCH, device_setup.cpp).
+  std::uint32_t rates_batch = kRatesBatchMax;
+  /// 64: the rates kernel keeps to 64 registers a thread (4 blocks of 256 threads on a
+  /// multiprocessor); 0: as many as the compiler likes (NETSPH_RATES_MAX_REGISTERS).
+  std::uint32_t rates_max_registers = 0;
   /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
   /// holds the bodies' states on entry and receives the new ones. `time` is the step's start.
   std::function<void(bool corrector, double time, double dt,
@@ -633,9 +641,12 @@ class DeviceStepper {
     const DeviceView v = arrays.view;
     const FluidModel m = s_.model;
     const DeviceRates out = arrays.rates;
-    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
-      device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a);
-    });
+    const std::uint32_t batch = s_.rates_batch;
+    const auto f = [=] NETSPH_LAMBDA(std::uint32_t a) {
+      device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a, batch);
+    };
+    if (s_.rates_max_registers == 64) return Exec::template for_each_occupying<4>(n_, f);
+    Exec::for_each(n_, f);
   }
 
   void save_start() {

@@ -78,6 +78,12 @@ struct HostExec {
     for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::uint32_t>(i));
   }
 
+  /// CudaExec's launch with a register cap; the host has none.
+  template <unsigned MinBlocks, class F>
+  static void for_each_occupying(std::size_t n, F f) {
+    for_each(n, f);
+  }
+
   /// Stable sort of (key, value) pairs by key, as cub::DeviceRadixSort::SortPairs with
   /// double buffers: returns whether the sorted pairs are in the _alt buffers. Like an LSD
   /// radix sort of 8-bit digits, they are there after an odd number of passes, so that tests
