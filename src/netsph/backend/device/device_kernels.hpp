@@ -102,16 +102,24 @@ struct alignas(16) PosPress {
   Real x, y, z, p;
 };
 
+/// A particle's velocity and density in one 16-byte element, as DualSPHysics' velrhop: a
+/// neighbour's pair terms then read it with one load (a 128-bit load on the GPU) instead of
+/// four scattered ones, and the pair's loads are this, its PosPress and its kind.
+struct alignas(16) VelRho {
+  Real vx, vy, vz, rho;
+};
+
 /// What the interaction reads: positions and pressures (from the equation of state once per
-/// particle), velocities and densities (the state's own array). Positions are relative to the
-/// grid origin, as the CPU view (backend/cpu/interaction_view.hpp). cvx.. is the velocity
-/// continuity sees (the solid's own velocity under a mirror slip condition); it aliases vx..
-/// when no wall mirrors. Whether a neighbour is fluid comes from the kind array (1 B a
-/// particle instead of a float).
+/// particle), velocities and densities. Positions are relative to the grid origin, as the CPU
+/// view (backend/cpu/interaction_view.hpp). cv is the velocity continuity sees (the solid's own
+/// velocity under a mirror slip condition; its rho is not used), read only when `mirrors`;
+/// otherwise it is vr. Whether a neighbour is fluid comes from the kind array (1 B a particle
+/// instead of a float).
 struct DeviceView {
   PosPress* pp;
-  Real *vx, *vy, *vz, *cvx, *cvy, *cvz;
-  const Real* rho;
+  VelRho* vr;
+  VelRho* cv;
+  bool mirrors;
 };
 
 /// The rates of one pass.
@@ -132,7 +140,7 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
   v.pp[i] = {static_cast<Real>(p.x - origin.x), static_cast<Real>(p.y - origin.y),
              static_cast<Real>(p.z - origin.z), m.eos.pressure(s.rho[i])};
   const Vec3f u = s.vel[i];
-  v.vx[i] = u.x, v.vy[i] = u.y, v.vz[i] = u.z;
+  v.vr[i] = {u.x, u.y, u.z, s.rho[i]};
   const ParticleKind k = s.kind[i];
   if (mirrors) {
     // A solid under a mirror slip condition shows continuity its own velocity (Simulation::
@@ -145,7 +153,7 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
       const RigidState& b = bodies[s.group[i]].state;
       c = Vec3f(rigid_point_velocity(b, s.pos[i] - b.com));
     }
-    v.cvx[i] = c.x, v.cvy[i] = c.y, v.cvz[i] = c.z;
+    v.cv[i] = {c.x, c.y, c.z, Real(0)};
   }
 }
 
@@ -179,33 +187,36 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
   const ParticleKind ka = kind[a];
   const PosPress pa = v.pp[a];
   const Real xa = pa.x, ya = pa.y, za = pa.z, press_a = pa.p;
-  const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
-  const Real cxa = v.cvx[a], cya = v.cvy[a], cza = v.cvz[a];
-  const Real rho_a = v.rho[a];
+  const VelRho ua = v.vr[a];
+  const Real vxa = ua.vx, vya = ua.vy, vza = ua.vz, rho_a = ua.rho;
+  const VelRho ca = v.mirrors ? v.cv[a] : ua;
+  const Real cxa = ca.vx, cya = ca.vy, cza = ca.vz;
   const bool fluid_a = ka == ParticleKind::Fluid, body_a = ka == ParticleKind::Body;
   // A body sees gauge pressures (backend/cpu/rates.cpp, body_sums, says why).
   const Real p_bg = m.eos.p_background;
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0, gx = 0, gy = 0, gz = 0, div = 0;
   const Real px = static_cast<Real>(g.period[0]), py = static_cast<Real>(g.period[1]),
              pz = static_cast<Real>(g.period[2]);
-  // Neighbour b at offset (dx, dy, dz), squared distance r2.
-  const auto add_pair = [&](std::uint32_t b, Real dx, Real dy, Real dz,
-                            Real r2) NETSPH_INLINE_LAMBDA {
+  // Neighbour b at offset (dx, dy, dz), squared distance r2, pressure press_b.
+  const auto add_pair = [&](std::uint32_t b, Real dx, Real dy, Real dz, Real r2,
+                            Real press_b) NETSPH_INLINE_LAMBDA {
     const Real fluid_b = carries_fluid(kind[b]) ? Real(1) : Real(0);
+    const VelRho ub = v.vr[b];
     if (fluid_a) {
+      const VelRho cb = v.mirrors ? v.cv[b] : ub;
       const Neighbour nb{{dx, dy, dz},
                          r2,
-                         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                         {vxa - v.cvx[b], vya - v.cvy[b], vza - v.cvz[b]},
-                         v.rho[b],
-                         v.pp[b].p,
+                         {vxa - ub.vx, vya - ub.vy, vza - ub.vz},
+                         {vxa - cb.vx, vya - cb.vy, vza - cb.vz},
+                         ub.rho,
+                         press_b,
                          m.mass,
                          fluid_b};
       const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
       ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
       vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
       if constexpr (Shift) {
-        const Real vf = m.mass / v.rho[b] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
+        const Real vf = m.mass / ub.rho * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
         gx += vf * dx, gy += vf * dy, gz += vf * dz;
         div -= vf * r2;
       }
@@ -215,10 +226,10 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
       const Real p_off = body_a ? p_bg : Real(0);
       const Neighbour nb{{dx, dy, dz},
                          r2,
-                         {vxa - v.vx[b], vya - v.vy[b], vza - v.vz[b]},
-                         {cxa - v.vx[b], cya - v.vy[b], cza - v.vz[b]},
-                         v.rho[b],
-                         v.pp[b].p - p_off,
+                         {vxa - ub.vx, vya - ub.vy, vza - ub.vz},
+                         {cxa - ub.vx, cya - ub.vy, cza - ub.vz},
+                         ub.rho,
+                         press_b - p_off,
                          m.mass,
                          fluid_b};
       const PairRates s = body_a ? fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(
@@ -238,7 +249,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
         const Real dx = (xa - shift.x) - pb.x, dy = (ya - shift.y) - pb.y,
                    dz = (za - shift.z) - pb.z;
         const Real r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 < m.support2 && b != a) add_pair(b, dx, dy, dz, r2);
+        if (r2 < m.support2 && b != a) add_pair(b, dx, dy, dz, r2, pb.p);
       }
     });
   } else {
@@ -264,7 +275,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
         const Real dx = (xa - nearest_image_shift(xa - pb.x, px)) - pb.x,
                    dy = (ya - nearest_image_shift(ya - pb.y, py)) - pb.y,
                    dz = (za - nearest_image_shift(za - pb.z, pz)) - pb.z;
-        add_pair(nb, dx, dy, dz, dx * dx + dy * dy + dz * dz);
+        add_pair(nb, dx, dy, dz, dx * dx + dy * dy + dz * dz, pb.p);
       }
     }
   }
@@ -457,8 +468,9 @@ NETSPH_HD Vec3f device_contact_particle(const GridIndex& g, const std::uint32_t*
       const std::int32_t other = device_solid_of(kind, group, b);
       if (other == -1 || other == self) continue;
       const PosPress pb = v.pp[b];
+      const VelRho ua = v.vr[a], ub = v.vr[b];
       acc += contact_acceleration(model, pa - Vec3f(pb.x, pb.y, pb.z),
-                                  Vec3f(v.vx[a] - v.vx[b], v.vy[a] - v.vy[b], v.vz[a] - v.vz[b]));
+                                  Vec3f(ua.vx - ub.vx, ua.vy - ub.vy, ua.vz - ub.vz));
     }
   });
   return acc;

@@ -318,10 +318,9 @@ class DeviceStepper {
     StepArrays a{};
     DeviceView& v = a.view;
     v.pp = c.take<PosPress>();
-    v.vx = c.take<Real>(), v.vy = c.take<Real>(), v.vz = c.take<Real>();
-    v.cvx = v.vx, v.cvy = v.vy, v.cvz = v.vz;
-    if (mirrors_) v.cvx = c.take<Real>(), v.cvy = c.take<Real>(), v.cvz = c.take<Real>();
-    v.rho = rho_.data();
+    v.vr = c.take<VelRho>();
+    v.mirrors = mirrors_;
+    v.cv = mirrors_ ? c.take<VelRho>() : v.vr;
     DeviceRates& r = a.rates;
     r.acc = c.take<Vec3f>(), r.drho = c.take<Real>(), r.visc_dt = c.take<Real>();
     r.grad_c = s_.shifting ? c.take<Vec3f>() : nullptr;
