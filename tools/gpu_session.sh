@@ -5,12 +5,12 @@
 #   1. the CUDA parity tests (tests/physics/device_parity_test.cpp, DeviceParity.Cuda*); if
 #      one fails, it again with NETSPH_CUDA_SYNC=1 (every kernel checked: the faulting launch
 #      is named), and no step 4
-#   2. netsph bench --backend cuda at 1e6, 1e7 and 5e7 particles, with the step's phases;
-#      then at 1e7 with the rates kernel's variants: each pair summed where it is found
-#      (NETSPH_RATES_BATCH=0), batches of 8 (the default 32), registers capped at 64
-#      (NETSPH_RATES_MAX_REGISTERS=64: 4 blocks a multiprocessor instead of 3)
+#   2. netsph bench --backend cuda at 1e6, 1e7 and 5e7 particles, with the step's phases
 #   3. the paper's flexible net at full resolution (1.35e8 particles): `netsph check` builds
-#      it, steps it on the GPU and reports its memory and the time per simulated second
+#      it, steps it on the GPU and reports its memory and the time per simulated second;
+#      then the 1e7 benchmark with the rates kernel's variants: each pair summed where it is
+#      found (NETSPH_RATES_BATCH=0), batches of 8 (the default 32), registers capped at 64
+#      (NETSPH_RATES_MAX_REGISTERS=64: 4 blocks a multiprocessor instead of 3)
 #   4. if time is left, the 3D floating box at dp = 0.01 m, a whole run with every output
 #      (its draft at this dp on the CPU: docs/VALIDATION.md)
 # Prepare here with ./tools/gpu_bundle.sh, then call the device tool with carry [".gpu"] and
@@ -29,7 +29,10 @@ nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv > "$work/r/
 # left of $total, and the results are packed after each step, so a killed call still returns
 # what had finished.
 total=${GPU_SESSION_SECONDS:-570}
-pack() { tar -C "$work" -czf "$out/results.tgz" r; }
+# Written aside and renamed, so that a call killed while packing still has the last archive.
+pack() {
+  tar -C "$work" -czf "$out/results.tgz.part" r && mv -f "$out/results.tgz.part" "$out/results.tgz"
+}
 run() {  # run LIMIT NAME COMMAND...: the command's output in r/NAME.log, its status in $last_rc
   local limit=$1 name=$2
   shift 2
@@ -58,12 +61,12 @@ if [ "$last_rc" -ne 0 ] && [ -f "$work/r/parity.log" ]; then
 fi
 run 150 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --profile \
   --json "$work/r/bench.json"
+run 240 bi2014_full .gpu/netsph check builtin:paper/net_bi2014 --backend cuda --sample-steps 10
 for knob in NETSPH_RATES_BATCH=0 NETSPH_RATES_BATCH=8 NETSPH_RATES_MAX_REGISTERS=64; do
   name=bench_$(echo "$knob" | sed 's/NETSPH_RATES_//; s/=//' | tr 'A-Z' 'a-z')
   run 45 "$name" env "$knob" .gpu/netsph bench --backend cuda --sizes 1e7 --steps 10 --profile \
     --json "$work/r/$name.json"
 done
-run 240 bi2014_full .gpu/netsph check builtin:paper/net_bi2014 --backend cuda --sample-steps 10
 [ -n "${skip_float3d:-}" ] || run 80 float3d .gpu/netsph run builtin:floating_box3d --backend cuda --set simulation.dp=0.01 \
   --no-plots --plain-progress -o "$work/float3d"
 for d in "$work"/float3d; do

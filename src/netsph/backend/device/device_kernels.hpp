@@ -178,7 +178,9 @@ NETSPH_HD Real nearest_image_shift(Real d, Real period) {
 /// pair terms whenever any thread of the warp has just found one, with most threads idle, so the
 /// warp pays the pair terms for nearly every candidate. Gathered first, every thread of the warp
 /// has a batch to sum and the warp pays them for about one candidate in four. The neighbours, their
-/// order and the sums are those of a single loop, whatever the batch size.
+/// order and the sums are those of a single loop, whatever the batch size (bit for bit on the
+/// host; nvcc may fuse the recomputed r^2 into other FMAs than the scan's: a last-bit
+/// difference).
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                      const std::uint32_t* keys, const ParticleKind* kind,

@@ -640,7 +640,8 @@ class DeviceStepper {
     const DeviceView v = arrays.view;
     const FluidModel m = s_.model;
     const DeviceRates out = arrays.rates;
-    const std::uint32_t batch = s_.rates_batch;
+    // The kernel's batch array holds kRatesBatchMax: never more, whoever built the setup.
+    const std::uint32_t batch = std::min(s_.rates_batch, kRatesBatchMax);
     const auto f = [=] NETSPH_LAMBDA(std::uint32_t a) {
       device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a, batch);
     };
