@@ -4,7 +4,7 @@
 # minutes):
 #   1. the CUDA parity tests (tests/physics/device_parity_test.cpp, DeviceParity.Cuda*); if
 #      one fails, it again with NETSPH_CUDA_SYNC=1 (every kernel checked: the faulting launch
-#      is named), and no step 4
+#      is named) and under compute-sanitizer's memcheck, and no step 4
 #   2. netsph bench --backend cuda at 1e6, 1e7 and 5e7 particles, with the step's phases
 #   3. the paper's flexible net at full resolution (1.35e8 particles): `netsph check` builds
 #      it, steps it on the GPU and reports its memory and the time per simulated second;
@@ -57,6 +57,11 @@ if [ "$last_rc" -ne 0 ] && [ -f "$work/r/parity.log" ]; then
   failing=$(grep -o '^\[  FAILED  \] DeviceParity\.Cuda[A-Za-z0-9]*' "$log" | head -1 | grep -o 'DeviceParity.*')
   [ -n "$failing" ] || failing=$(grep -o '^\[ RUN      \] DeviceParity\.Cuda[A-Za-z0-9]*' "$log" | tail -1 | grep -o 'DeviceParity.*')
   run 60 parity_sync env NETSPH_CUDA_SYNC=1 .gpu/device_parity_test --gtest_filter="${failing:-DeviceParity.Cuda*}"
+  # And under compute-sanitizer's memcheck (it ran on the Firecracker machines: KINDS.md): an
+  # out-of-bounds or misaligned access is named with its kernel and, from -lineinfo, its line.
+  sanitizer=$(command -v compute-sanitizer || echo /usr/local/cuda/bin/compute-sanitizer)
+  [ ! -x "$sanitizer" ] || run 90 parity_memcheck "$sanitizer" --tool memcheck --print-limit 20 \
+    .gpu/device_parity_test --gtest_filter="${failing:-DeviceParity.Cuda*}"
   skip_float3d=1
 fi
 run 150 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --profile \
