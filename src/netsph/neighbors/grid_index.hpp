@@ -86,6 +86,16 @@ struct GridIndex {
     return q;
   }
 
+  /// Cell index i on axis a (y or z) moved into the grid across a periodic boundary, with the
+  /// shift that brings the particles there next to the searching cell; false if i is outside a
+  /// non-periodic axis.
+  NETSPH_HD bool wrap_row(int a, int& i, float& shift) const {
+    if (!periodic[a]) return i >= 0 && i < n[a];
+    if (i < 0) i += n[a], shift = static_cast<float>(-period[a]);
+    if (i >= n[a]) i -= n[a], shift = static_cast<float>(period[a]);
+    return true;
+  }
+
   /// The first non-empty candidate range of cell `c` (done() if it has none). With
   /// next_range, a scan that must stop and resume (device_rates_particle gathers a batch of
   /// neighbours, sums it, then scans on); for_each_range is the whole scan in one call.
@@ -131,19 +141,13 @@ struct GridIndex {
       }
       int iz = r.cz + r.dz;
       float sz = 0;
-      if (periodic[2]) {
-        if (iz < 0) iz += n[2], sz = static_cast<float>(-period[2]);
-        if (iz >= n[2]) iz -= n[2], sz = static_cast<float>(period[2]);
-      } else if (iz < 0 || iz >= n[2]) {
+      if (!wrap_row(2, iz, sz)) {
         r.dy = ry, r.run = 2;  // the whole z row is outside: on to the next
         continue;
       }
       int iy = r.cy + r.dy;
       float sy = 0;
-      if (periodic[1]) {
-        if (iy < 0) iy += n[1], sy = static_cast<float>(-period[1]);
-        if (iy >= n[1]) iy -= n[1], sy = static_cast<float>(period[1]);
-      } else if (iy < 0 || iy >= n[1]) {
+      if (!wrap_row(1, iy, sy)) {
         r.run = 2;  // the whole y row is outside
         continue;
       }

@@ -12,35 +12,34 @@ namespace netsph {
 namespace {
 
 /// A whole number from the environment variable `name`, `fallback` if unset; an error naming
-/// the variable and the range if it is not one in [lo, hi].
-long whole_number_from_environment(const char* name, long lo, long hi, long fallback,
-                                   const std::string& range) {
+/// the variable and what it may be (`allowed`, in words) unless `valid` accepts it.
+template <class Valid>
+long whole_number_from_environment(const char* name, long fallback, Valid valid,
+                                   const std::string& allowed) {
   const char* text = std::getenv(name);
   if (text == nullptr || *text == '\0') return fallback;
   char* end = nullptr;
   const long v = std::strtol(text, &end, 10);
-  if (*end != '\0' || v < lo || v > hi) {
+  if (*end != '\0' || !valid(v)) {
     throw Error("environment",
-                std::string(name) + " is '" + text + "': it must be a whole number " + range);
+                std::string(name) + " is '" + text + "': it must be a whole number " + allowed);
   }
   return v;
 }
 
 /// NETSPH_RATES_BATCH: how many neighbours a device rates pass gathers before summing them
 /// (device_rates_particle; 0: each pair summed where it is found); NETSPH_RATES_MAX_REGISTERS:
-/// 64 caps the rates kernel's registers (DeviceSetup::rates_max_registers). Knobs for
+/// 64 caps the rates kernel's registers (DeviceSetup::rates_registers_capped). Knobs for
 /// measuring the GPU, not physical settings: the results are the same for every value.
 void rates_kernel_from_environment(DeviceSetup& s) {
-  s.rates_batch = static_cast<std::uint32_t>(
-      whole_number_from_environment("NETSPH_RATES_BATCH", 0, kRatesBatchMax, kRatesBatchMax,
-                                    "from 0 (no batches) to " + std::to_string(kRatesBatchMax)));
-  const long regs =
-      whole_number_from_environment("NETSPH_RATES_MAX_REGISTERS", 0, 64, 0, "0 (no cap) or 64");
-  if (regs != 0 && regs != 64) {
-    throw Error("environment", "NETSPH_RATES_MAX_REGISTERS is '" + std::to_string(regs) +
-                                   "': it must be a whole number 0 (no cap) or 64");
-  }
-  s.rates_max_registers = static_cast<std::uint32_t>(regs);
+  s.rates_batch = static_cast<std::uint32_t>(whole_number_from_environment(
+      "NETSPH_RATES_BATCH", kRatesBatchMax,
+      [](long v) { return v >= 0 && v <= static_cast<long>(kRatesBatchMax); },
+      "from 0 (no batches) to " + std::to_string(kRatesBatchMax)));
+  s.rates_registers_capped =
+      whole_number_from_environment(
+          "NETSPH_RATES_MAX_REGISTERS", 0, [](long v) { return v == 0 || v == 64; },
+          "0 (no cap) or 64") == 64;
 }
 
 }  // namespace

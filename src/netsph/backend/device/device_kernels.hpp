@@ -168,6 +168,16 @@ NETSPH_HD Real nearest_image_shift(Real d, Real period) {
   return d > Real(0.5) * period ? period : (d < Real(-0.5) * period ? -period : Real(0));
 }
 
+/// The offset from candidate b to particle a (its position shifted across periodic
+/// boundaries) and its square.
+struct PairOffset {
+  Real dx, dy, dz, r2;
+};
+NETSPH_HD PairOffset pair_offset(Real xa, Real ya, Real za, Vec3f shift, const PosPress& pb) {
+  const Real dx = (xa - shift.x) - pb.x, dy = (ya - shift.y) - pb.y, dz = (za - shift.z) - pb.z;
+  return {dx, dy, dz, dx * dx + dy * dy + dz * dz};
+}
+
 /// Rates of particle a: fluid particles sum every neighbour (fluid_pair_rates), wall particles
 /// the fluid ones (boundary_pair_rates), as backend/cpu/rates.cpp.
 ///
@@ -199,9 +209,10 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0, gx = 0, gy = 0, gz = 0, div = 0;
   const Real px = static_cast<Real>(g.period[0]), py = static_cast<Real>(g.period[1]),
              pz = static_cast<Real>(g.period[2]);
-  // Neighbour b at offset (dx, dy, dz), squared distance r2, pressure press_b.
-  const auto add_pair = [&](std::uint32_t b, Real dx, Real dy, Real dz, Real r2,
+  // Neighbour b at offset o, pressure press_b.
+  const auto add_pair = [&](std::uint32_t b, const PairOffset& o,
                             Real press_b) NETSPH_INLINE_LAMBDA {
+    const Real dx = o.dx, dy = o.dy, dz = o.dz, r2 = o.r2;
     const Real fluid_b = carries_fluid(kind[b]) ? Real(1) : Real(0);
     const VelRho ub = v.vr[b];
     if (fluid_a) {
@@ -248,10 +259,8 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
     g.for_each_range(cell_begin, keys[a], [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
       for (std::uint32_t b = b0; b < b1; ++b) {
         const PosPress pb = v.pp[b];
-        const Real dx = (xa - shift.x) - pb.x, dy = (ya - shift.y) - pb.y,
-                   dz = (za - shift.z) - pb.z;
-        const Real r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 < m.support2 && b != a) add_pair(b, dx, dy, dz, r2, pb.p);
+        const PairOffset o = pair_offset(xa, ya, za, shift, pb);
+        if (o.r2 < m.support2 && b != a) add_pair(b, o, pb.p);
       }
     });
   } else {
@@ -261,11 +270,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
     while (!r.done()) {
       std::uint32_t found = 0;
       do {
-        const PosPress pb = v.pp[b];
-        const Real dx = (xa - r.shift.x) - pb.x, dy = (ya - r.shift.y) - pb.y,
-                   dz = (za - r.shift.z) - pb.z;
-        const Real r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 < m.support2 && b != a) hits[found++] = b;
+        if (pair_offset(xa, ya, za, r.shift, v.pp[b]).r2 < m.support2 && b != a) hits[found++] = b;
         if (++b == r.e) {
           g.next_range(cell_begin, r);
           b = r.b;
@@ -274,10 +279,9 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
       for (std::uint32_t k = 0; k < found; ++k) {
         const std::uint32_t nb = hits[k];
         const PosPress pb = v.pp[nb];
-        const Real dx = (xa - nearest_image_shift(xa - pb.x, px)) - pb.x,
-                   dy = (ya - nearest_image_shift(ya - pb.y, py)) - pb.y,
-                   dz = (za - nearest_image_shift(za - pb.z, pz)) - pb.z;
-        add_pair(nb, dx, dy, dz, dx * dx + dy * dy + dz * dz, pb.p);
+        const Vec3f image(nearest_image_shift(xa - pb.x, px), nearest_image_shift(ya - pb.y, py),
+                          nearest_image_shift(za - pb.z, pz));
+        add_pair(nb, pair_offset(xa, ya, za, image, pb), pb.p);
       }
     }
   }

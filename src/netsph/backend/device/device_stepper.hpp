@@ -82,9 +82,9 @@ struct DeviceSetup {
   /// Neighbours a rates pass gathers before summing them, 0 (none: each pair summed where it
   /// is found) to kRatesBatchMax (device_rates_particle; NETSPH_RATES_BATCH, device_setup.cpp).
   std::uint32_t rates_batch = kRatesBatchMax;
-  /// 64: the rates kernel keeps to 64 registers a thread (4 blocks of 256 threads on a
-  /// multiprocessor); 0: as many as the compiler likes (NETSPH_RATES_MAX_REGISTERS).
-  std::uint32_t rates_max_registers = 0;
+  /// The rates kernel keeps to 64 registers a thread (4 blocks of 256 threads on a
+  /// multiprocessor) instead of as many as the compiler likes (NETSPH_RATES_MAX_REGISTERS=64).
+  bool rates_registers_capped = false;
   /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
   /// holds the bodies' states on entry and receives the new ones. `time` is the step's start.
   std::function<void(bool corrector, double time, double dt,
@@ -645,7 +645,7 @@ class DeviceStepper {
     const auto f = [=] NETSPH_LAMBDA(std::uint32_t a) {
       device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a, batch);
     };
-    if (s_.rates_max_registers == 64) return Exec::template for_each_occupying<4>(n_, f);
+    if (s_.rates_registers_capped) return Exec::template for_each_occupying<4>(n_, f);
     Exec::for_each(n_, f);
   }
 
