@@ -8,9 +8,10 @@
 #   2. netsph bench --backend cuda at 1e6, 1e7 and 5e7 particles, with the step's phases
 #   3. the paper's flexible net at full resolution (1.35e8 particles): `netsph check` builds
 #      it, steps it on the GPU and reports its memory and the time per simulated second;
-#      then the 1e7 benchmark with the rates kernel's variants: each pair summed where it is
-#      found (NETSPH_RATES_BATCH=0), batches of 8 (the default 32), registers capped at 64
-#      (NETSPH_RATES_MAX_REGISTERS=64: 4 blocks a multiprocessor instead of 3)
+#      then the 1e7 benchmark with the rates kernel's variants: every candidate cell scanned
+#      (NETSPH_RATES_TRIM=0), each pair summed where it is found (NETSPH_RATES_BATCH=0),
+#      registers not capped or capped at 64 (NETSPH_RATES_MAX_REGISTERS=0 or 64: 2 or 4 blocks
+#      a multiprocessor instead of the default's 3 at 80), batches of 8 (the default 32)
 #   4. if time is left, the 3D floating box at dp = 0.01 m, a whole run with every output
 #      (its draft at this dp on the CPU: docs/VALIDATION.md)
 # Prepare here with ./tools/gpu_bundle.sh, then call the device tool with carry [".gpu"] and
@@ -67,7 +68,8 @@ fi
 run 150 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --profile \
   --json "$work/r/bench.json"
 run 240 bi2014_full .gpu/netsph check builtin:paper/net_bi2014 --backend cuda --sample-steps 10
-for knob in NETSPH_RATES_BATCH=0 NETSPH_RATES_BATCH=8 NETSPH_RATES_MAX_REGISTERS=64; do
+for knob in NETSPH_RATES_TRIM=0 NETSPH_RATES_BATCH=0 NETSPH_RATES_MAX_REGISTERS=0 \
+  NETSPH_RATES_MAX_REGISTERS=64 NETSPH_RATES_BATCH=8; do
   name=bench_$(echo "$knob" | sed 's/NETSPH_RATES_//; s/=//' | tr 'A-Z' 'a-z')
   run 45 "$name" env "$knob" .gpu/netsph bench --backend cuda --sizes 1e7 --steps 10 --profile \
     --json "$work/r/$name.json"

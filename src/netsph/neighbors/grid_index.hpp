@@ -26,11 +26,16 @@ struct RangeCursor {
   Vec3f shift{};
   int cx = 0, cy = 0, cz = 0;   ///< the cell searched around
   int dz = 0, dy = 0, run = 0;  ///< the range's z and y rows and x run (0, 1, 2)
+  /// A trimmed scan (GridIndex::first_range with a point): the point's offset from the low
+  /// corner of cell (cx, cy, cz), m.
+  bool trim = false;
+  float fx = 0, fy = 0, fz = 0;
   NETSPH_HD bool done() const { return b == e; }
 };
 
 struct GridIndex {
   static constexpr int kSearchCells = 2;  ///< CellGrid::kSearchCells
+  static_assert(kSearchCells == 2, "next_range's trim drops at most two cells at each row end");
   Vec3d origin{};
   Vec3d upper{};
   Vec3d inv_cell{};
@@ -38,6 +43,11 @@ struct GridIndex {
   int n[3] = {1, 1, 1};
   bool periodic[3] = {false, false, false};
   int dims = 3;
+  float cell[3] = {1, 1, 1};  ///< cell size per axis, m
+  /// The distance from a point within which a trimmed scan keeps every cell: the support plus
+  /// the largest displacement since the sort (a candidate lies within that of its cell) plus a
+  /// round-off margin (CellGrid::configure). 0: scans are not trimmed.
+  float reach = 0;
 
   NETSPH_HD std::uint32_t cells() const {
     return static_cast<std::uint32_t>(n[0]) * static_cast<std::uint32_t>(n[1]) *
@@ -100,12 +110,26 @@ struct GridIndex {
   /// next_range, a scan that must stop and resume (device_rates_particle gathers a batch of
   /// neighbours, sums it, then scans on); for_each_range is the whole scan in one call.
   NETSPH_HD RangeCursor first_range(const std::uint32_t* cell_begin, std::uint32_t c) const {
-    const std::uint32_t nx = static_cast<std::uint32_t>(n[0]);
-    const std::uint32_t nxy = nx * static_cast<std::uint32_t>(n[1]);
-    RangeCursor r;
-    r.cx = static_cast<int>(c % nx), r.cy = static_cast<int>((c / nx) % n[1]);
-    r.cz = static_cast<int>(c / nxy);
-    r.dz = -kSearchCells, r.dy = dims == 2 ? 0 : -kSearchCells, r.run = -1;
+    RangeCursor r = cursor_at(c);
+    next_range(cell_begin, r);
+    return r;
+  }
+
+  /// The same for a scan that needs the candidates within the support of one point only, `at`
+  /// (m, from the origin, in cell c, or carried up to the largest displacement out of it since
+  /// the sort, and not wrapped since): the rows and cells farther from it than `reach` are left
+  /// out (where reach is 0, none). Of the 125 cells of a 3D search about two thirds are kept (a
+  /// ball of radius 2h touches fewer cells of 1.05 h than its bounding cube holds), so a third
+  /// fewer candidates are tested; the ranges kept are those of the whole scan, cut, in the same
+  /// order, and every particle within the support is in them.
+  NETSPH_HD RangeCursor first_range(const std::uint32_t* cell_begin, std::uint32_t c,
+                                    Vec3f at) const {
+    RangeCursor r = cursor_at(c);
+    if (reach > 0) {
+      r.trim = true;
+      r.fx = offset_in_cell(0, at.x, r.cx), r.fy = offset_in_cell(1, at.y, r.cy);
+      r.fz = offset_in_cell(2, at.z, r.cz);
+    }
     next_range(cell_begin, r);
     return r;
   }
@@ -128,17 +152,8 @@ struct GridIndex {
           }
         }
       }
-      int lo, hi;
-      float sx = 0;
-      if (r.run == 0) {
-        if (!(periodic[0] && x0 < 0)) continue;
-        lo = x0 + n[0], hi = n[0] - 1, sx = static_cast<float>(-period[0]);
-      } else if (r.run == 1) {
-        lo = x0 > 0 ? x0 : 0, hi = x1 < n[0] - 1 ? x1 : n[0] - 1;
-      } else {
-        if (!(periodic[0] && x1 >= n[0])) continue;
-        lo = 0, hi = x1 - n[0], sx = static_cast<float>(period[0]);
-      }
+      if (r.run == 0 && !(periodic[0] && x0 < 0)) continue;
+      if (r.run == 2 && !(periodic[0] && x1 >= n[0])) continue;
       int iz = r.cz + r.dz;
       float sz = 0;
       if (!wrap_row(2, iz, sz)) {
@@ -151,6 +166,39 @@ struct GridIndex {
         r.run = 2;  // the whole y row is outside
         continue;
       }
+      // The row's cells [lo, hi], numbered as if the x axis went on past its ends: all 2R + 1,
+      // or in a trimmed scan those within reach of the point.
+      int lo = x0, hi = x1;
+      if (r.trim) {
+        const float gz = gap(r.dz, r.fz, cell[2]);
+        const float gy = dims == 2 ? 0.0f : gap(r.dy, r.fy, cell[1]);
+        const float rest = reach * reach - gz * gz - gy * gy;
+        if (!(rest > 0)) {
+          r.run = 2;  // the whole row is out of reach
+          continue;
+        }
+        // The end cells out of reach dropped, without branches (a cell farther out goes only
+        // with the one before it; the point's own cell always stays).
+        const bool out_l2 = square(gap(-2, r.fx, cell[0])) >= rest;
+        const bool out_l1 = out_l2 & (square(gap(-1, r.fx, cell[0])) >= rest);
+        const bool out_h2 = square(gap(2, r.fx, cell[0])) >= rest;
+        const bool out_h1 = out_h2 & (square(gap(1, r.fx, cell[0])) >= rest);
+        lo += static_cast<int>(out_l2) + static_cast<int>(out_l1);
+        hi -= static_cast<int>(out_h2) + static_cast<int>(out_h1);
+      }
+      // The run's part of them (the wrapped low end, the grid, the wrapped high end), moved
+      // into the grid.
+      float sx = 0;
+      if (r.run == 0) {
+        hi = hi < -1 ? hi : -1;
+        lo += n[0], hi += n[0], sx = static_cast<float>(-period[0]);
+      } else if (r.run == 1) {
+        lo = lo > 0 ? lo : 0, hi = hi < n[0] - 1 ? hi : n[0] - 1;
+      } else {
+        lo = lo > n[0] ? lo : n[0];
+        lo -= n[0], hi -= n[0], sx = static_cast<float>(period[0]);
+      }
+      if (lo > hi) continue;
       const std::uint32_t row = static_cast<std::uint32_t>(n[0]) *
                                 (static_cast<std::uint32_t>(iy) +
                                  static_cast<std::uint32_t>(n[1]) * static_cast<std::uint32_t>(iz));
@@ -170,6 +218,43 @@ struct GridIndex {
                                 Visit&& visit) const {
     for (RangeCursor r = first_range(cell_begin, c); !r.done(); next_range(cell_begin, r))
       visit(r.b, r.e, r.shift);
+  }
+
+  /// The same, trimmed to the reach of point `at` in cell c (first_range with a point).
+  template <class Visit>
+  NETSPH_HD void for_each_range(const std::uint32_t* cell_begin, std::uint32_t c, Vec3f at,
+                                Visit&& visit) const {
+    for (RangeCursor r = first_range(cell_begin, c, at); !r.done(); next_range(cell_begin, r))
+      visit(r.b, r.e, r.shift);
+  }
+
+ private:
+  NETSPH_HD RangeCursor cursor_at(std::uint32_t c) const {
+    const std::uint32_t nx = static_cast<std::uint32_t>(n[0]);
+    const std::uint32_t nxy = nx * static_cast<std::uint32_t>(n[1]);
+    RangeCursor r;
+    r.cx = static_cast<int>(c % nx), r.cy = static_cast<int>((c / nx) % n[1]);
+    r.cz = static_cast<int>(c / nxy);
+    r.dz = -kSearchCells, r.dy = dims == 2 ? 0 : -kSearchCells, r.run = -1;
+    return r;
+  }
+
+  /// Coordinate x (m, from the origin) on axis a as an offset from the low side of cell i.
+  /// Positions are not wrapped between two sorts, so a point carried across a periodic end
+  /// since the sort stays next to its cell.
+  NETSPH_HD float offset_in_cell(int a, float x, int i) const {
+    return x - static_cast<float>(i) * cell[a];
+  }
+
+  NETSPH_HD static float square(float x) { return x * x; }
+
+  /// The distance along one axis from offset f (m, from the low side of the searched cell) to
+  /// the cell d cells away, each `size` wide.
+  NETSPH_HD static float gap(int d, float f, float size) {
+    const float below = static_cast<float>(d) * size - f,
+                above = f - static_cast<float>(d + 1) * size;
+    const float g = below > above ? below : above;
+    return g > 0 ? g : 0.0f;
   }
 };
 

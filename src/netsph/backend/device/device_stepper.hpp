@@ -82,9 +82,14 @@ struct DeviceSetup {
   /// Neighbours a rates pass gathers before summing them, 0 (none: each pair summed where it
   /// is found) to kRatesBatchMax (device_rates_particle; NETSPH_RATES_BATCH, device_setup.cpp).
   std::uint32_t rates_batch = kRatesBatchMax;
-  /// The rates kernel keeps to 64 registers a thread (4 blocks of 256 threads on a
-  /// multiprocessor) instead of as many as the compiler likes (NETSPH_RATES_MAX_REGISTERS=64).
-  bool rates_registers_capped = false;
+  /// The registers a thread of the rates kernel may use (NETSPH_RATES_MAX_REGISTERS): 80, so
+  /// that 3 blocks of 256 threads fit on a multiprocessor (nvcc fits every variant in 78-80
+  /// with at most 12 B of spills; uncapped it takes 88-93, which leaves room for 2); 64 (4
+  /// blocks, 36-180 B of spills); 0, as many as the compiler likes.
+  int rates_max_registers = 80;
+  /// The rates kernel scans only the cells within reach of each particle (GridIndex::reach);
+  /// false scans all 125 (NETSPH_RATES_TRIM=0).
+  bool rates_trimmed = true;
   /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
   /// holds the bodies' states on entry and receives the new ones. `time` is the step's start.
   std::function<void(bool corrector, double time, double dt,
@@ -632,7 +637,8 @@ class DeviceStepper {
 
   template <class K, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
   void rates_launch() {
-    const GridIndex g = s_.grid;
+    GridIndex g = s_.grid;
+    if (!s_.rates_trimmed) g.reach = 0;
     const std::uint32_t* begin = cell_begin_.data();
     const std::uint32_t* keys = keys_.data();
     const ParticleKind* kind = kind_.data();
@@ -645,7 +651,8 @@ class DeviceStepper {
     const auto f = [=] NETSPH_LAMBDA(std::uint32_t a) {
       device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a, batch);
     };
-    if (s_.rates_registers_capped) return Exec::template for_each_occupying<4>(n_, f);
+    if (s_.rates_max_registers == 64) return Exec::template for_each_occupying<4>(n_, f);
+    if (s_.rates_max_registers == 80) return Exec::template for_each_occupying<3>(n_, f);
     Exec::for_each(n_, f);
   }
 
