@@ -27,9 +27,11 @@ struct RangeCursor {
   int cx = 0, cy = 0, cz = 0;   ///< the cell searched around
   int dz = 0, dy = 0, run = 0;  ///< the range's z and y rows and x run (0, 1, 2)
   /// A trimmed scan (GridIndex::first_range with a point): the point's offset from the low
-  /// corner of cell (cx, cy, cz), m.
+  /// corner of cell (cx, cy, cz) along y and z, m, and its squared distances along x to the
+  /// cells 2 and 1 before and 1 and 2 after it, m^2 (the same for every row).
   bool trim = false;
-  float fx = 0, fy = 0, fz = 0;
+  float fy = 0, fz = 0;
+  float x_gap2[4] = {0, 0, 0, 0};
   NETSPH_HD bool done() const { return b == e; }
 };
 
@@ -127,8 +129,10 @@ struct GridIndex {
     RangeCursor r = cursor_at(c);
     if (reach > 0) {
       r.trim = true;
-      r.fx = offset_in_cell(0, at.x, r.cx), r.fy = offset_in_cell(1, at.y, r.cy);
-      r.fz = offset_in_cell(2, at.z, r.cz);
+      r.fy = offset_in_cell(1, at.y, r.cy), r.fz = offset_in_cell(2, at.z, r.cz);
+      const float fx = offset_in_cell(0, at.x, r.cx);
+      r.x_gap2[0] = square(gap(-2, fx, cell[0])), r.x_gap2[1] = square(gap(-1, fx, cell[0]));
+      r.x_gap2[2] = square(gap(1, fx, cell[0])), r.x_gap2[3] = square(gap(2, fx, cell[0]));
     }
     next_range(cell_begin, r);
     return r;
@@ -179,10 +183,8 @@ struct GridIndex {
         }
         // The end cells out of reach dropped, without branches (a cell farther out goes only
         // with the one before it; the point's own cell always stays).
-        const bool out_l2 = square(gap(-2, r.fx, cell[0])) >= rest;
-        const bool out_l1 = out_l2 & (square(gap(-1, r.fx, cell[0])) >= rest);
-        const bool out_h2 = square(gap(2, r.fx, cell[0])) >= rest;
-        const bool out_h1 = out_h2 & (square(gap(1, r.fx, cell[0])) >= rest);
+        const bool out_l2 = r.x_gap2[0] >= rest, out_l1 = out_l2 & (r.x_gap2[1] >= rest);
+        const bool out_h2 = r.x_gap2[3] >= rest, out_h1 = out_h2 & (r.x_gap2[2] >= rest);
         lo += static_cast<int>(out_l2) + static_cast<int>(out_l1);
         hi -= static_cast<int>(out_h2) + static_cast<int>(out_h1);
       }
