@@ -11,7 +11,8 @@
 #      then the 1e7 benchmark with the rates kernel's variants: every candidate cell scanned
 #      (NETSPH_RATES_TRIM=0), each pair summed where it is found (NETSPH_RATES_BATCH=0),
 #      registers not capped or capped at 64 (NETSPH_RATES_MAX_REGISTERS=0 or 64: 2 or 4 blocks
-#      a multiprocessor instead of the default's 3 at 80), batches of 8 (the default 32)
+#      a multiprocessor instead of the default's 3 at 80), batches of 8 (the default 32); before
+#      them, the rates kernel under Nsight Compute (ncu: occupancy, memory, stalls) at 1e6
 #   4. if time is left, the 3D floating box at dp = 0.01 m, a whole run with every output
 #      (its draft at this dp on the CPU: docs/VALIDATION.md)
 # Prepare here with ./tools/gpu_bundle.sh, then call the device tool with carry [".gpu"] and
@@ -68,6 +69,16 @@ fi
 run 150 bench .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --profile \
   --json "$work/r/bench.json"
 run 240 bi2014_full .gpu/netsph check builtin:paper/net_bi2014 --backend cuda --sample-steps 10
+# The rates kernel (the step's only bounded launch) under Nsight Compute: occupancy reached,
+# memory throughput, L1 hits, why warps stall. It read the counters on the Firecracker
+# machines (KINDS.md); --clock-control none as METHOD.md asks. Two launches after the warm-up
+# step: the first and the second pass of a step.
+profiler=$(command -v ncu || echo /usr/local/cuda/bin/ncu)
+[ ! -x "$profiler" ] || run 75 ncu_rates "$profiler" --clock-control none \
+  --kernel-name regex:for_each_bounded_kernel --launch-skip 2 --launch-count 2 \
+  --section SpeedOfLight --section Occupancy --section LaunchStats \
+  --section MemoryWorkloadAnalysis --section WarpStateStats --section SchedulerStats \
+  .gpu/netsph bench --backend cuda --sizes 1e6 --steps 2
 for knob in NETSPH_RATES_TRIM=0 NETSPH_RATES_BATCH=0 NETSPH_RATES_MAX_REGISTERS=0 \
   NETSPH_RATES_MAX_REGISTERS=64 NETSPH_RATES_BATCH=8; do
   name=bench_$(echo "$knob" | sed 's/NETSPH_RATES_//; s/=//' | tr 'A-Z' 'a-z')
