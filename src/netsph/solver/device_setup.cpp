@@ -30,7 +30,7 @@ long whole_number_from_environment(const char* name, long fallback, Valid valid,
 /// NETSPH_RATES_BATCH: how many neighbours a device rates pass gathers before summing them
 /// (device_rates_particle; 0: each pair summed where it is found); NETSPH_RATES_MAX_REGISTERS:
 /// 80 (the default), 64 or 0 (none) caps the rates kernel's registers
-/// (DeviceSetup::rates_max_registers);
+/// (DeviceSetup::rates_registers);
 /// NETSPH_RATES_TRIM: 0 scans every candidate cell (DeviceSetup::rates_trimmed). Knobs for
 /// measuring the GPU, not physical settings: the results are the same for every value.
 void rates_kernel_from_environment(DeviceSetup& s) {
@@ -38,9 +38,12 @@ void rates_kernel_from_environment(DeviceSetup& s) {
       "NETSPH_RATES_BATCH", kRatesBatchMax,
       [](long v) { return v >= 0 && v <= static_cast<long>(kRatesBatchMax); },
       "from 0 (no batches) to " + std::to_string(kRatesBatchMax)));
-  s.rates_max_registers = static_cast<int>(whole_number_from_environment(
+  const long registers = whole_number_from_environment(
       "NETSPH_RATES_MAX_REGISTERS", 80, [](long v) { return v == 0 || v == 64 || v == 80; },
-      "0 (no cap), 64 or 80"));
+      "0 (no cap), 64 or 80");
+  s.rates_registers = registers == 80   ? RatesRegisterCap::To80
+                      : registers == 64 ? RatesRegisterCap::To64
+                                        : RatesRegisterCap::None;
   s.rates_trimmed = whole_number_from_environment(
                         "NETSPH_RATES_TRIM", 1, [](long v) { return v == 0 || v == 1; },
                         "0 (all 125 cells) or 1 (the cells within reach)") == 1;

@@ -60,6 +60,13 @@
 
 namespace netsph {
 
+/// How many registers a thread of the rates kernel may use. A multiprocessor has 65536,
+/// given out 8 a thread at a time: To80 lets 3 blocks of 256 threads share one (nvcc fits
+/// every rates variant in 78-80 registers with at most 12 B of spills; uncapped they take
+/// 89-94, room for 2 blocks), To64 4 blocks (44-192 B of spills), None as many as the
+/// compiler likes.
+enum class RatesRegisterCap : std::uint8_t { To80, To64, None };
+
 /// What a device step needs from the case (solver/device_setup.cpp builds it).
 struct DeviceSetup {
   FluidModel model;
@@ -82,11 +89,8 @@ struct DeviceSetup {
   /// Neighbours a rates pass gathers before summing them, 0 (none: each pair summed where it
   /// is found) to kRatesBatchMax (device_rates_particle; NETSPH_RATES_BATCH, device_setup.cpp).
   std::uint32_t rates_batch = kRatesBatchMax;
-  /// The registers a thread of the rates kernel may use (NETSPH_RATES_MAX_REGISTERS): 80, so
-  /// that 3 blocks of 256 threads fit on a multiprocessor (nvcc fits every variant in 78-80
-  /// with at most 12 B of spills; uncapped it takes 88-93, which leaves room for 2); 64 (4
-  /// blocks, 36-180 B of spills); 0, as many as the compiler likes.
-  int rates_max_registers = 80;
+  /// The registers a thread of the rates kernel may use (NETSPH_RATES_MAX_REGISTERS).
+  RatesRegisterCap rates_registers = RatesRegisterCap::To80;
   /// The rates kernel scans only the cells within reach of each particle (GridIndex::reach);
   /// false scans all 125 (NETSPH_RATES_TRIM=0).
   bool rates_trimmed = true;
@@ -651,9 +655,14 @@ class DeviceStepper {
     const auto f = [=] NETSPH_LAMBDA(std::uint32_t a) {
       device_rates_particle<K, Visc, Diff, Shift>(g, begin, keys, kind, v, m, out, a, batch);
     };
-    if (s_.rates_max_registers == 64) return Exec::template for_each_occupying<4>(n_, f);
-    if (s_.rates_max_registers == 80) return Exec::template for_each_occupying<3>(n_, f);
-    Exec::for_each(n_, f);
+    switch (s_.rates_registers) {
+      case RatesRegisterCap::To80:
+        return Exec::template for_each_occupying<3>(n_, f);
+      case RatesRegisterCap::To64:
+        return Exec::template for_each_occupying<4>(n_, f);
+      case RatesRegisterCap::None:
+        return Exec::for_each(n_, f);
+    }
   }
 
   void save_start() {
