@@ -8,6 +8,7 @@
 #include "netsph/geometry/body_particles.hpp"
 #include "netsph/geometry/box_bins.hpp"
 #include "netsph/geometry/shapes.hpp"
+#include "netsph/solver/body_motion.hpp"
 #include "netsph/solver/scene.hpp"
 
 namespace netsph {
@@ -100,6 +101,8 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
             static_cast<Real>(spec.fluid.density), ParticleKind::Body,
             static_cast<std::uint32_t>(bi), Vec3f(rotate(body.state.q, Vec3d(body.ghosts.back()))));
     }
+    if (const std::string why = body_outside_periodic_extent(spec, body); !why.empty())
+      throw Error(b.where.str(), why + "; move the body or lengthen the domain");
     scene.sources.push_back({b.name, local.size()});
     scene.bodies.push_back(std::move(body));
   }

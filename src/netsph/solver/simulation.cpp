@@ -130,6 +130,19 @@ void Simulation::reduce_body_forces() {
 
 void Simulation::advance_bodies(bool corrector, double dt) {
   netsph::advance_bodies(spec_, scene_.bodies, nets_, time_, corrector, dt);
+  check_bodies_inside_periodic_extent(time_);
+}
+
+void Simulation::check_bodies_inside_periodic_extent(double time) const {
+  if (!spec_.domain.periodic[0] && !spec_.domain.periodic[1] && !spec_.domain.periodic[2]) return;
+  for (const RigidBody& b : scene_.bodies) {
+    if (const std::string why = body_outside_periodic_extent(spec_, b); !why.empty()) {
+      throw SimulationUnstable(
+          "bodies", fmt::format("in the step from t = {:.6g} s: {}; lengthen the domain or keep "
+                                "the body away from its ends",
+                                time, why));
+    }
+  }
 }
 
 void Simulation::sort_particles(bool mid_step) {
