@@ -45,7 +45,7 @@ struct GridIndex {
   int n[3] = {1, 1, 1};
   bool periodic[3] = {false, false, false};
   int dims = 3;
-  float cell[3] = {1, 1, 1};  ///< cell size per axis, m
+  float cell[3] = {1, 1, 1};  ///< cell size per axis, m (1 / inv_cell, in float for the trim)
   /// The distance from a point within which a trimmed scan keeps every cell: the support plus
   /// the largest displacement since the sort (a candidate lies within that of its cell) plus a
   /// round-off margin (CellGrid::configure). 0: scans are not trimmed.

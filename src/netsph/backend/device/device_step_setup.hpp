@@ -1,0 +1,70 @@
+#pragma once
+// What the device step (device_stepper.hpp) takes from a case and gives back each step: its
+// constants and hooks (DeviceSetup, built by solver/device_setup.cpp) and its report.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "netsph/backend/device/device_kernels.hpp"
+#include "netsph/neighbors/grid_index.hpp"
+#include "netsph/sph/time_step.hpp"
+
+namespace netsph {
+
+/// How many registers a thread of the rates kernel may use. A multiprocessor has 65536,
+/// given out 8 a thread at a time: To80 lets 3 blocks of 256 threads share one (nvcc fits
+/// every rates variant in 78-80 registers with at most 12 B of spills; uncapped they take
+/// 89-94, room for 2 blocks), To64 4 blocks (44-192 B of spills), None as many as the
+/// compiler likes.
+enum class RatesRegisterCap : std::uint8_t { To80, To64, None };
+
+/// What a device step needs from the case (solver/device_setup.cpp builds it).
+struct DeviceSetup {
+  FluidModel model;
+  GridIndex grid;
+  double max_displacement = 0;  ///< CellGrid::max_displacement()
+  double cfl = 0.2;
+  double dt_max = 0;  ///< 0: none
+  double dt_min = 0;  ///< 0: 1e-4 of the first dt
+  bool shifting = false;
+  ShiftingParams shift_params;
+  std::vector<DeviceWall> walls;  ///< by wall index
+  /// Velocity of wall w at time t (null: every wall is at rest).
+  std::function<Vec3f(std::size_t w, double t)> wall_velocity;
+  std::vector<DeviceZone> zones;             ///< open boundaries: inlets, then outlets
+  std::vector<double> profile_z, profile_u;  ///< the zones' inflow profiles, concatenated
+  double gz = 0;                             ///< gravity's z component, m/s^2 (hydrostatic buffers)
+  std::vector<DeviceBody> bodies;            ///< by body index, with their initial states
+  std::vector<Vec3f> body_offsets, body_ghosts;  ///< body frame, by DeviceBody::offset_base + k
+  ContactModel contact;
+  /// Neighbours a rates pass gathers before summing them, 0 (none: each pair summed where it
+  /// is found) to kRatesBatchMax (device_rates_particle; NETSPH_RATES_BATCH, device_setup.cpp).
+  std::uint32_t rates_batch = kRatesBatchMax;
+  /// The registers a thread of the rates kernel may use (NETSPH_RATES_MAX_REGISTERS).
+  RatesRegisterCap rates_registers = RatesRegisterCap::To80;
+  /// The rates kernel scans only the cells within reach of each particle (GridIndex::reach);
+  /// false scans all 125 (NETSPH_RATES_TRIM=0).
+  bool rates_trimmed = true;
+  /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
+  /// holds the bodies' states on entry and receives the new ones. `time` is the step's start.
+  std::function<void(bool corrector, double time, double dt,
+                     const std::vector<DeviceBodyLoads>& loads, std::vector<RigidState>& states)>
+      advance_bodies;
+};
+
+/// Why a step stopped early.
+enum class DeviceStepStatus { Ok, DtCollapsed, NonFinite };
+
+struct DeviceStepReport {
+  DeviceStepStatus status = DeviceStepStatus::Ok;
+  TimeStepLimits dt_limits;
+  double dt_floor = 0;
+  std::size_t lost = 0;     ///< particles dropped this step for leaving the grid
+  std::size_t created = 0;  ///< inlet buffer particles created this step
+  std::size_t removed = 0;  ///< buffer particles that left through a face this step
+  bool resorted = false;
+  double max_speed = 0;  ///< largest fluid speed at the end of the step, m/s
+};
+
+}  // namespace netsph
