@@ -43,12 +43,6 @@ struct Scanned {
   std::size_t reachable_left_out = 0;
 };
 
-void set_axis(Vec3d& p, int axis, double v) {
-  if (axis == 0) p.x = v;
-  if (axis == 1) p.y = v;
-  if (axis == 2) p.z = v;
-}
-
 /// The distance from p to the box [lo, lo + size] (size 0 on an axis: that axis ignored).
 double box_distance(const Vec3d& p, const Vec3d& lo, const Vec3d& size) {
   double d2 = 0;
@@ -82,7 +76,7 @@ Scanned scan(const Case& k, unsigned seed) {
         const double face = k.lo[a] + std::round((x - k.lo[a]) / cell) * cell;
         if (face >= lo + margin && face <= hi - margin) x = face;
       }
-      set_axis(pos[i], a, x);
+      pos[i][a] = x;
     }
   }
   std::vector<std::uint32_t> order;
@@ -147,10 +141,7 @@ Scanned scan(const Case& k, unsigned seed) {
       for (int ax = 0; ax < 3; ++ax) {
         if (!grid.periodic(ax)) continue;
         const double len = grid.period()[ax];
-        const double v = d[ax] - len * std::round(d[ax] / len);
-        if (ax == 0) d.x = v;
-        if (ax == 1) d.y = v;
-        if (ax == 2) d.z = v;
+        d[ax] -= len * std::round(d[ax] / len);
       }
       if (norm2(d) < s2) out.expected.insert({a, b});
     }
