@@ -107,6 +107,23 @@ TEST(Distributed, FloatingBoxOnTwoProcessesMatchesOne) {
   test::expect_parity(compare_split(spec, 2, 200));
 }
 
+// A floating box carried across the periodic end of the split axis: its particles are wrapped
+// into the other process's slab while its centre is not (place_rigid_particle, rigid_lever_arm).
+// The Poiseuille channel made 0.3 m long so that the slabs go along x, cut at its ends and middle.
+TEST(Distributed, FloatingBoxAcrossThePeriodicEndOnTwoProcessesMatchesOne) {
+  const CaseSpec spec = test::load_case(
+      "poiseuille2d.toml",
+      {"domain.max=[0.3, 0.0, 0.13]", "fill=[{min=[0.0, 0.0, 0.0], max=[0.3, 0.0, 0.1]}]",
+       "wall=[{name=\"plates\", min=[0.0, 0.0, 0.0], max=[0.3, 0.0, 0.1], faces=[\"zmin\", "
+       "\"zmax\"], layers=3, model=\"mdbc\", slip=\"no_slip\"}]",
+       "body=[{name=\"box\", shape=\"box\", size=[0.02, 0.02, 0.02], center=[0.2965, 0, 0.035], "
+       "motion=\"floating\", density=1000, initial_velocity=[0.5, 0, 0]}]"});
+  Simulation one(spec);
+  for (int s = 0; s < 400; ++s) one.step();
+  ASSERT_GT(one.bodies()[0].state.com.x, 0.3) << "the box's centre did not cross the end";
+  test::expect_parity(compare_split(spec, 2, 400));
+}
+
 // A knot on a twine in a periodic current with shifting, the knot across the cut: the net's
 // solver runs on every process from the summed loads. Without the case's inlet and outlet
 // buffers (not distributed yet): the duct is periodic and its walls move with the current.

@@ -9,7 +9,6 @@
 #include <fstream>
 #include <limits>
 
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "case_runs.hpp"
@@ -91,51 +90,6 @@ TEST(Instability, FluidLeavingTheDomainStopsWithWhereItWent) {
   EXPECT_LT(c.real("sim.time"), r.sim_time);  // the last good state, not the failed one
   EXPECT_GT(c.real("sim.time"), 0.0);
   EXPECT_EQ(summary_of(dir)["status"], "unstable");
-}
-
-// A body whose particles reach past a periodic end would be placed a period away from where
-// the neighbour search looks for them (body_outside_periodic_extent): refused at set-up, and a
-// body carried there stops the run, on the CPU and on the device-shaped step alike.
-std::vector<std::string> periodic_channel_with_a_box(double centre_x, double speed) {
-  return {
-      fmt::format("body=[{{name=\"box\", shape=\"box\", size=[0.02, 0.02, 0.02], "
-                  "center=[{}, 0, 0.05], motion=\"prescribed\", velocity=[{}, 0, 0]}}]",
-                  centre_x, speed)};
-}
-
-TEST(Instability, ABodyAcrossAPeriodicEndIsRefusedAtSetUp) {
-  try {
-    Simulation sim(test::load_case("poiseuille2d.toml", periodic_channel_with_a_box(0.095, 0)));
-    ADD_FAILURE() << "a body across the periodic x end was accepted";
-  } catch (const Error& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("body 'box' reaches past the periodic x end of the domain [0, 0.1] m "
-                     "(centre x = 0.095 m"),
-              std::string::npos)
-        << m;
-    EXPECT_NE(m.find("move the body or lengthen the domain"), std::string::npos) << m;
-  }
-  // The same box in the middle is accepted.
-  EXPECT_NO_THROW(
-      Simulation(test::load_case("poiseuille2d.toml", periodic_channel_with_a_box(0.05, 0))));
-}
-
-TEST(Instability, ABodyCarriedPastAPeriodicEndStopsTheRun) {
-  for (const StepBackend backend : {StepBackend::Cpu, StepBackend::HostDevice}) {
-    SCOPED_TRACE(backend == StepBackend::Cpu ? "cpu" : "host-device");
-    // 1 m/s towards the end 0.02 m away: its farthest particle, 0.0106 m from the centre,
-    // gets there after 0.0094 m (about 66 steps).
-    Simulation sim(test::load_case("poiseuille2d.toml", periodic_channel_with_a_box(0.08, 1.0)),
-                   backend);
-    const fs::path dir = fresh_dir("periodic_body");
-    const RunReport r = run_quietly(sim, dir);
-    ASSERT_EQ(r.status, "unstable");
-    EXPECT_NE(r.message.find("body 'box' reaches past the periodic x end"), std::string::npos)
-        << r.message;
-    EXPECT_GT(r.sim_time, 0.0085);
-    EXPECT_LT(r.sim_time, 0.0105);
-    EXPECT_EQ(summary_of(dir)["status"], "unstable");
-  }
 }
 
 }  // namespace

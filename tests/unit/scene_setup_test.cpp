@@ -10,6 +10,8 @@
 
 #include "netsph/case/case_reader.hpp"
 #include "netsph/case/case_spec.hpp"
+#include "netsph/core/error.hpp"
+#include "netsph/core/periodic_image.hpp"
 #include "netsph/core/quaternion.hpp"
 #include "netsph/geometry/box_bins.hpp"
 #include "netsph/geometry/box_lattice.hpp"
@@ -124,6 +126,75 @@ TEST(SceneSetup, FluidInsideBodiesIsRemovedAsByTestingEveryBody) {
     if (p.kind[i] == ParticleKind::Fluid) {
       ASSERT_FALSE(removed_by_some_body(p.pos[i])) << i;
     }
+  }
+}
+
+TEST(SceneSetup, FluidUnderABodyAcrossPeriodicEndsIsRemovedAtEveryImage) {
+  // Periodic in x and z: boxes across one end, across two (a corner, three images) and inside;
+  // the fluid kept must be what a test against each body's nearest image keeps, and the bodies'
+  // particles are wrapped into the domain, their centres left where the case put them.
+  const double dp = 0.01;
+  CaseSpec spec = fluid_cube(dp);
+  spec.domain = {true, {0, 0, 0}, {0.4, 0.4, 0.4}, {true, false, true}};
+  const Vec3d period{0.4, 0, 0.4};
+  const Vec3d centres[] = {{0.39, 0.2, 0.2}, {0.01, 0.15, 0.38}, {0.2, 0.2, 0.2}};
+  for (int k = 0; k < 3; ++k) {
+    BodySpec b;
+    b.name = "box" + std::to_string(k);
+    b.lengths = {0.08, 0.06, 0.1};
+    b.center = centres[k];
+    b.orientation = normalized(Quat{1, 0.2 * k, 0.1, -0.3});
+    b.layers = 2;
+    spec.bodies.push_back(b);
+  }
+  const Scene scene = build_scene(spec);
+  const auto removed_by_some_body = [&](const Vec3d& x) {
+    for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+      const Shape s = Shape::box(spec.bodies[k].lengths);
+      const RigidBody& body = scene.bodies[k];
+      const Vec3d local =
+          rotate_inverse(body.state.q, nearest_image_offset(x - body.state.com, period));
+      if (s.inside(local) || s.depth(local) < 0.5 * dp * (1 - 1e-6)) return true;
+    }
+    return false;
+  };
+  std::size_t expected_removed = 0;
+  for (const Vec3d& x : fill_box({spec.fills[0].box.min, spec.fills[0].box.max, 3}, dp))
+    expected_removed += removed_by_some_body(x);
+  std::printf("fluid removed inside 3 bodies, two across periodic ends: %zu (brute force %zu)\n",
+              scene.removed_in_bodies, expected_removed);
+  EXPECT_EQ(scene.removed_in_bodies, expected_removed);
+  const ParticleSet& p = scene.particles;
+  std::size_t body_particles = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] == ParticleKind::Fluid) {
+      ASSERT_FALSE(removed_by_some_body(p.pos[i])) << i;
+    }
+    if (p.kind[i] != ParticleKind::Body) continue;
+    ++body_particles;
+    for (const int a : {0, 2}) {
+      ASSERT_GE(p.pos[i][a], 0.0) << i;
+      ASSERT_LT(p.pos[i][a], 0.4) << i;
+    }
+    // Where the body put it, a whole number of periods away.
+    const RigidBody& body = scene.bodies[p.group[i]];
+    const Vec3d r = rotate(body.state.q, Vec3d(body.offsets[p.id[i] - body.first_id]));
+    ASSERT_LT(norm(rigid_lever_arm(body.state, p.pos[i], period) - r), 1e-7) << i;  // float offsets
+  }
+  EXPECT_GT(body_particles, 1000u);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(scene.bodies[k].state.com, centres[k]);
+  // A body as wide as half the period is refused, naming it, the axis and the sizes.
+  spec.bodies.resize(1);
+  spec.bodies[0].lengths = {0.3, 0.3, 0.1};  // corners 0.22 m from the centre
+  try {
+    build_scene(spec);
+    ADD_FAILURE() << "a body wider than half the period was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("body 'box0' has particles up to"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("half the periodic x axis's period (0.4 m)"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "netsph/core/host_device.hpp"
+#include "netsph/core/periodic_image.hpp"
 #include "netsph/core/physics_options.hpp"
 #include "netsph/core/quaternion.hpp"
 #include "netsph/core/vec3.hpp"
@@ -83,6 +84,15 @@ NETSPH_HD Vec3d rigid_point_velocity(const RigidState& s, const Vec3d& r) {
   return s.vel + cross(s.omega, r);
 }
 
+/// A body particle's lever arm: its world offset from the centre of mass. The centre follows
+/// the body without being wrapped into periodic axes; the particle is wrapped with the fluid,
+/// so the offset is taken at its nearest image (`period`: domain length along periodic axes,
+/// else 0). Unique while the body is narrower than half a period (checked at set-up,
+/// body_wider_than_half_period).
+NETSPH_HD Vec3d rigid_lever_arm(const RigidState& s, const Vec3d& pos, const Vec3d& period) {
+  return nearest_image_offset(pos - s.com, period);
+}
+
 /// A body particle's mDBC ghost vector in the world frame from its body-frame one.
 NETSPH_HD Vec3f rigid_ghost(const RigidState& s, const Vec3f& ghost_offset, int dims) {
   Vec3d g = rotate(s.q, Vec3d(ghost_offset));
@@ -94,14 +104,19 @@ NETSPH_HD Vec3f rigid_ghost(const RigidState& s, const Vec3f& ghost_offset, int 
 /// the rotated mDBC ghost vector, and (when the body shows its own velocity) the rigid
 /// velocity there. Returns the displacement squared from where it was. Both backends place
 /// body particles through this.
-
+///
+/// Along a periodic axis (`period` > 0) the particle goes to the image of centre + offset
+/// nearest where it was: the neighbour search finds it through the cell it was sorted into
+/// (positions are wrapped only when sorting), whatever number of periods the centre has
+/// travelled, so a body may cross a periodic end.
 NETSPH_HD double place_rigid_particle(const RigidState& s, const Vec3f& offset,
                                       const Vec3f& ghost_offset, int dims, bool shows_own_velocity,
-                                      Vec3d& pos, Vec3f& vel, Vec3f& ghost) {
+                                      const Vec3d& period, Vec3d& pos, Vec3f& vel, Vec3f& ghost) {
   Vec3d r = rotate(s.q, Vec3d(offset));
   if (dims == 2) r.y = 0;  // rotation round-off must not leave the x-z plane
   const Vec3d previous = pos;
   pos = s.com + r;
+  pos -= nearest_image_correction(pos - previous, period);
   if (shows_own_velocity) vel = Vec3f(rigid_point_velocity(s, r));
   ghost = rigid_ghost(s, ghost_offset, dims);
   const Vec3d d = pos - previous;

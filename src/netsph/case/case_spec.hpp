@@ -73,6 +73,9 @@ struct DomainSpec {
   Vec3d min{}, max{};
   std::array<bool, 3>
       periodic{};  ///< periodic = ["x", "y", "z"] (subset; y not in 2D); needs min/max
+
+  /// The domain's length along `axis` where that axis is periodic, else 0.
+  double period(int axis) const { return given && periodic[axis] ? max[axis] - min[axis] : 0.0; }
 };
 
 struct BoxSpec {

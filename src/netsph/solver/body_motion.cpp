@@ -39,20 +39,18 @@ void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
   if (!nets.empty()) advance_coupled_nets(nets, bodies, corrector ? dt : 0.5 * dt);
 }
 
-std::string body_outside_periodic_extent(const CaseSpec& spec, const RigidBody& b) {
+std::string body_wider_than_half_period(const CaseSpec& spec, const RigidBody& b) {
   double radius = 0;
   for (const Vec3f& o : b.offsets) radius = std::max(radius, norm(Vec3d(o)));
   static const char* axis_name[] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    if (!spec.domain.periodic[a] || (spec.simulation.dimensions == 2 && a == 1)) continue;
-    const double lo = spec.domain.min[a], hi = spec.domain.max[a], c = b.state.com[a];
-    if (c - radius >= lo && c + radius < hi) continue;
+    const double period = spec.domain.period(a);
+    if (!(period > 0) || radius < 0.5 * period) continue;
     return fmt::format(
-        "body '{}' reaches past the periodic {} end of the domain [{:.6g}, {:.6g}] m (centre "
-        "{} = {:.6g} m, particles up to {:.3g} m from it): a body must stay inside a periodic "
-        "axis's extent (its particles would be placed a period away from where the neighbour "
-        "search looks for them, and the fluid there would not see them)",
-        b.name, axis_name[a], lo, hi, axis_name[a], c, radius);
+        "body '{}' has particles up to {:.4g} m from its centre of mass, not less than half the "
+        "periodic {} axis's period ({:.4g} m): a particle's offset from the centre, taken at its "
+        "nearest periodic image, would not be its own",
+        b.name, radius, axis_name[a], period);
   }
   return {};
 }

@@ -20,11 +20,12 @@ namespace netsph {
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
                     std::vector<CoupledNet>& nets, double time, bool corrector, double dt);
 
-/// What is wrong, in words, if a particle of body `b` may lie outside the domain along a
-/// periodic axis (judged by its particle farthest from the centre of mass); empty if none can.
-/// Not supported: the sort wraps particles into the period, but a body's particles are placed
-/// again at centre + offset every stage, a period away from the cells they were sorted into,
-/// where the neighbour search does not look, so the fluid there would not see them.
-std::string body_outside_periodic_extent(const CaseSpec& spec, const RigidBody& b);
+/// What is wrong, in words, if body `b` is as wide as half a periodic axis's period or wider
+/// (judged by its particle farthest from the centre of mass, so whatever its rotation); empty
+/// if not. A body may cross a periodic end (place_rigid_particle puts each particle at the image
+/// nearest the cell it was sorted into), but its lever arms are taken at the nearest image of
+/// each particle (rigid_lever_arm), which is its own only while the body spans less than half
+/// a period.
+std::string body_wider_than_half_period(const CaseSpec& spec, const RigidBody& b);
 
 }  // namespace netsph

@@ -18,6 +18,21 @@ LatticeBox lattice_box(const BoxSpec& b, int dims) {
   return {b.min, b.max, dims};
 }
 
+/// Body particles past a periodic end moved into the period by whole periods, as the solver
+/// keeps them (a body may straddle the end; its centre of mass stays where the case put it).
+void wrap_body_particles(const CaseSpec& spec, ParticleSet& p) {
+  for (int a = 0; a < 3; ++a) {
+    const double lo = spec.domain.min[a], period = spec.domain.period(a);
+    if (!(period > 0)) continue;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.kind[i] != ParticleKind::Body) continue;
+      double& x = p.pos[i][a];
+      x -= period * std::floor((x - lo) / period);
+      if (x >= lo + period) x = lo;  // round-off just below the period's start
+    }
+  }
+}
+
 const char* kind_name(ParticleKind k) {
   switch (k) {
     case ParticleKind::Fluid:
@@ -230,6 +245,7 @@ Scene build_scene(const CaseSpec& spec) {
   }
   if (p.size() == 0) throw Error(spec.source, "the case creates no particles");
   scene.removed_in_bodies = remove_fluid_in_bodies(spec, scene);
+  wrap_body_particles(spec, p);
 
   // Bounding box of the particles, for the default domain and the overlap search.
   Vec3d lo = p.pos[0], hi = p.pos[0];

@@ -101,8 +101,8 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
             static_cast<Real>(spec.fluid.density), ParticleKind::Body,
             static_cast<std::uint32_t>(bi), Vec3f(rotate(body.state.q, Vec3d(body.ghosts.back()))));
     }
-    if (const std::string why = body_outside_periodic_extent(spec, body); !why.empty())
-      throw Error(b.where.str(), why + "; move the body or lengthen the domain");
+    if (const std::string why = body_wider_than_half_period(spec, body); !why.empty())
+      throw Error(b.where.str(), why + "; make the body smaller or lengthen the domain");
     scene.sources.push_back({b.name, local.size()});
     scene.bodies.push_back(std::move(body));
   }
@@ -120,7 +120,15 @@ std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
   const double dp = spec.simulation.dp;
   ParticleSet& p = scene.particles;
   std::vector<Shape> shapes;
-  std::vector<Aabb> boxes;  // each body's bounding box in the world, dp wider on every side
+  // Each body's bounding box in the world, dp wider on every side, and, where it reaches past
+  // a periodic end, its images a period away on the other side, which hold fluid the body
+  // covers there: box k is body image_of[k].body's, centred at its centre + image_of[k].shift.
+  struct BodyImage {
+    std::uint32_t body;
+    Vec3d shift;
+  };
+  std::vector<Aabb> boxes;
+  std::vector<BodyImage> image_of;
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     shapes.push_back(shape_of(spec.bodies[bi], spec));
     const RigidBody& body = scene.bodies[bi];
@@ -130,9 +138,29 @@ std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
       const Vec3d e = rotate(body.state.q, axis);
       half += Vec3d{std::abs(e.x), std::abs(e.y), std::abs(e.z)};
     }
-    boxes.push_back({body.state.com - half, body.state.com + half});
+    const Aabb box{body.state.com - half, body.state.com + half};
+    std::vector<Vec3d> shifts{Vec3d{}};
+    for (int a = 0; a < 3; ++a) {
+      const double period = spec.domain.period(a);
+      if (!(period > 0)) continue;
+      const std::size_t before = shifts.size();
+      for (const double side : {-1.0, 1.0}) {
+        const bool past =
+            side < 0 ? box.lo[a] < spec.domain.min[a] : box.hi[a] > spec.domain.max[a];
+        if (!past) continue;
+        for (std::size_t k = 0; k < before; ++k) {
+          Vec3d s = shifts[k];
+          s[a] -= side * period;
+          shifts.push_back(s);
+        }
+      }
+    }
+    for (const Vec3d& s : shifts) {
+      boxes.push_back({box.lo + s, box.hi + s});
+      image_of.push_back({static_cast<std::uint32_t>(bi), s});
+    }
   }
-  // Each particle is tested against the bodies whose bin holds it only.
+  // Each particle is tested against the body images whose bin holds it only.
   const BoxBins bins(boxes);
   std::vector<char> keep(p.size(), 1);
   std::size_t removed = 0;
@@ -142,10 +170,11 @@ std::size_t remove_fluid_in_bodies(const CaseSpec& spec, Scene& scene) {
     const auto i = static_cast<std::size_t>(ii);
     if (!carries_fluid(p.kind[i])) continue;
     const Vec3d& x = p.pos[i];
-    for (const std::uint32_t bi : bins.candidates(x)) {
-      if (!boxes[bi].contains(x)) continue;
+    for (const std::uint32_t k : bins.candidates(x)) {
+      if (!boxes[k].contains(x)) continue;
+      const std::uint32_t bi = image_of[k].body;
       const RigidBody& body = scene.bodies[bi];
-      const Vec3d local = rotate_inverse(body.state.q, x - body.state.com);
+      const Vec3d local = rotate_inverse(body.state.q, x - (body.state.com + image_of[k].shift));
       // Inside, or within dp/2 of the surface (the fluid keeps dp/2 off it, as off walls).
       if (shapes[bi].inside(local) || shapes[bi].depth(local) < 0.5 * dp * (1 - 1e-6)) {
         keep[i] = 0, ++removed;

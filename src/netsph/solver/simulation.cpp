@@ -69,7 +69,7 @@ void Simulation::set_view_continuity_velocity(bool half_step) {
 
 Vec3f Simulation::body_point_velocity(std::size_t i) const {
   const RigidBody& b = scene_.bodies[p_.group[i]];
-  return Vec3f(rigid_point_velocity(b.state, p_.pos[i] - b.state.com));
+  return Vec3f(rigid_point_velocity(b.state, rigid_lever_arm(b.state, p_.pos[i], grid_.period())));
 }
 
 double Simulation::place_body_particles(bool from_step_start) {
@@ -77,6 +77,7 @@ double Simulation::place_body_particles(bool from_step_start) {
   if (bodies.empty()) return 0;
   const auto n = static_cast<std::int64_t>(p_.size());
   const int dims = scene_.model.dims;
+  const Vec3d period = grid_.period();
   double max_d2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max_d2)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -87,7 +88,7 @@ double Simulation::place_body_particles(bool from_step_start) {
     // `from_step_start` (body particles do not move in the predictor).
     const double d2 =
         place_rigid_particle(b.state, b.offsets[k], b.ghosts[k], dims, b.shows_own_velocity(),
-                             p_.pos[i], p_.vel[i], p_.ghost[i]);
+                             period, p_.pos[i], p_.vel[i], p_.ghost[i]);
     if (from_step_start) max_d2 = std::max(max_d2, d2);
   }
   return std::sqrt(max_d2);
@@ -107,7 +108,7 @@ void Simulation::reduce_body_forces() {
     // exactly one process counts each.
     if (partition_ && !partition_->owns(p_.pos[i])) continue;
     RigidBody& b = bodies[p_.group[i]];
-    const Vec3d r = p_.pos[i] - b.state.com;
+    const Vec3d r = rigid_lever_arm(b.state, p_.pos[i], grid_.period());
     const Vec3d f = Vec3d(acc_[i]) * m, fc = Vec3d(contact_[i]) * m;
     b.fluid_force += f;
     b.fluid_torque += cross(r, f);
@@ -130,20 +131,6 @@ void Simulation::reduce_body_forces() {
 
 void Simulation::advance_bodies(bool corrector, double dt) {
   netsph::advance_bodies(spec_, scene_.bodies, nets_, time_, corrector, dt);
-  check_bodies_inside_periodic_extent(time_);
-}
-
-void Simulation::check_bodies_inside_periodic_extent(double time) const {
-  if (!spec_.domain.periodic[0] && !spec_.domain.periodic[1] && !spec_.domain.periodic[2]) return;
-  for (const RigidBody& b : scene_.bodies) {
-    if (b.motion == BodyMotion::Fixed) continue;  // never moves: checked at set-up
-    if (const std::string why = body_outside_periodic_extent(spec_, b); !why.empty()) {
-      throw SimulationUnstable(
-          "bodies", fmt::format("in the step from t = {:.6g} s: {}; lengthen the domain or keep "
-                                "the body away from its ends",
-                                time, why));
-    }
-  }
 }
 
 void Simulation::sort_particles(bool mid_step) {

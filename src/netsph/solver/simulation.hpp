@@ -180,9 +180,6 @@ class Simulation {
   void reduce_body_forces();
   /// Advances every body's state to the half step (predictor) or the full step.
   void advance_bodies(bool corrector, double dt);
-  /// Stops the run (SimulationUnstable) if a body has moved past a periodic end in the step
-  /// that started at `time` (body_outside_periodic_extent says why that is not supported).
-  void check_bodies_inside_periodic_extent(double time) const;
   Vec3f body_point_velocity(std::size_t i) const;
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
   /// With a partition: owned_ from the present positions (exact right after the exchange).

@@ -27,7 +27,6 @@ void Simulation::start_device() {
       body.contact_force = {f[6], f[7], f[8]}, body.contact_torque = {f[9], f[10], f[11]};
     }
     netsph::advance_bodies(spec_, scene_.bodies, nets_, time, corrector, dt);
-    check_bodies_inside_periodic_extent(time);
     for (std::size_t b = 0; b < scene_.bodies.size(); ++b) states[b] = scene_.bodies[b].state;
   };
   bool moving = false;

@@ -134,8 +134,9 @@ struct DeviceRates {
 /// The view of particle i (InteractionView::build).
 NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, const FluidModel& m,
                                     const DeviceWall* walls, const WallKinematics* motion,
-                                    const DeviceBody* bodies, const Vec3d& origin, std::uint32_t i,
-                                    bool mirrors, bool half_step) {
+                                    const DeviceBody* bodies, const Vec3d& origin,
+                                    const Vec3d& period, std::uint32_t i, bool mirrors,
+                                    bool half_step) {
   const Vec3d p = s.pos[i];
   v.pp[i] = {static_cast<Real>(p.x - origin.x), static_cast<Real>(p.y - origin.y),
              static_cast<Real>(p.z - origin.z), m.eos.pressure(s.rho[i])};
@@ -151,7 +152,7 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
       c = half_step ? w.half : w.start;
     } else if (k == ParticleKind::Body && !bodies[s.group[i]].shows_own_velocity) {
       const RigidState& b = bodies[s.group[i]].state;
-      c = Vec3f(rigid_point_velocity(b, s.pos[i] - b.com));
+      c = Vec3f(rigid_point_velocity(b, rigid_lever_arm(b, s.pos[i], period)));
     }
     v.cv[i] = {c.x, c.y, c.z, Real(0)};
   }
@@ -359,7 +360,7 @@ NETSPH_HD void device_mdbc_particle(const GridIndex& g, const std::uint32_t* cel
     if (!has_ghost) return;  // body ghosts are zero unless the body uses mDBC
     const DeviceBody& b = bodies[s.group[i]];
     slip = b.slip;
-    v_solid = Vec3f(rigid_point_velocity(b.state, s.pos[i] - b.state.com));
+    v_solid = Vec3f(rigid_point_velocity(b.state, rigid_lever_arm(b.state, s.pos[i], g.period)));
   }
   const GhostSums sums = device_ghost_sums<Kernel>(g, cell_begin, s, m, s.pos[i] + Vec3d(off),
                                                    /*fluid_only=*/false);
@@ -489,13 +490,13 @@ NETSPH_HD Vec3f device_contact_particle(const GridIndex& g, const std::uint32_t*
 /// returns its displacement squared from where it was (0 unless `measure`).
 NETSPH_HD double device_place_body_particle(const DeviceState& s, const DeviceBody* bodies,
                                             const Vec3f* offsets, const Vec3f* ghosts, int dims,
-                                            bool measure, std::uint32_t i) {
+                                            const Vec3d& period, bool measure, std::uint32_t i) {
   if (s.kind[i] != ParticleKind::Body) return 0;
   const DeviceBody& b = bodies[s.group[i]];
   const std::uint32_t k = b.offset_base + (s.id[i] - b.first_id);
   Vec3f ghost;  // not kept: device_solid_ghost turns it when mDBC needs it
   const double d2 = place_rigid_particle(b.state, offsets[k], ghosts[k], dims, b.shows_own_velocity,
-                                         s.pos[i], s.vel[i], ghost);
+                                         period, s.pos[i], s.vel[i], ghost);
   return measure ? d2 : 0.0;
 }
 

@@ -412,10 +412,10 @@ class DeviceStepper {
     const DeviceWall* walls = walls_.data();
     const WallKinematics* motion = motion_.data();
     const DeviceBody* bodies = bodies_.data();
-    const Vec3d origin = s_.grid.origin;
+    const Vec3d origin = s_.grid.origin, period = s_.grid.period;
     const bool mirrors = mirrors_;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      device_view_particle(st, v, m, walls, motion, bodies, origin, i, mirrors, half_step);
+      device_view_particle(st, v, m, walls, motion, bodies, origin, period, i, mirrors, half_step);
     });
   }
 
@@ -441,10 +441,11 @@ class DeviceStepper {
     const Vec3f* offsets = offsets_.data();
     const Vec3f* ghosts = body_ghosts_.data();
     const int dims = s_.model.dims;
+    const Vec3d period = s_.grid.period;
     Real* moved = scalars();
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
       moved[i] = static_cast<Real>(
-          device_place_body_particle(st, bodies, offsets, ghosts, dims, from_start, i));
+          device_place_body_particle(st, bodies, offsets, ghosts, dims, period, from_start, i));
     });
     return from_start ? std::sqrt(static_cast<double>(Exec::max_of(moved, n_))) : 0.0;
   }
@@ -519,12 +520,13 @@ class DeviceStepper {
     const DeviceView v = step_arrays().view;
     const ContactModel c = s_.contact;
     const double mass = s_.model.mass;
+    const Vec3d period = g.period;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
       const Vec3f acc = device_contact_particle(g, begin, keys, st.kind, st.group, v, c, a);
       if (acc.x == 0 && acc.y == 0 && acc.z == 0) return;
       const std::uint32_t b = st.group[a];
       double load[6];
-      device_particle_load(st.pos[a] - bodies[b].state.com, acc, mass, load);
+      device_particle_load(rigid_lever_arm(bodies[b].state, st.pos[a], period), acc, mass, load);
       for (int k = 0; k < 6; ++k) {
         if (load[k] != 0) Exec::atomic_add(loads + 12 * b + 6 + k, load[k]);
       }
@@ -541,11 +543,12 @@ class DeviceStepper {
     const DeviceBody* bodies = bodies_.data();
     const Vec3f* acc = step_arrays().rates.acc;
     const double mass = s_.model.mass;
+    const Vec3d period = s_.grid.period;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
       if (st.kind[i] != ParticleKind::Body) return;
       const std::uint32_t b = st.group[i];
       double load[6];
-      device_particle_load(st.pos[i] - bodies[b].state.com, acc[i], mass, load);
+      device_particle_load(rigid_lever_arm(bodies[b].state, st.pos[i], period), acc[i], mass, load);
       for (int k = 0; k < 6; ++k) {
         if (load[k] != 0) Exec::atomic_add(loads + 12 * b + k, load[k]);
       }
