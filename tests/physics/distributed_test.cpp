@@ -7,11 +7,13 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <thread>
 
 #include "case_runs.hpp"
+#include "netsph/core/error.hpp"
 #include "netsph/distributed/distributed_simulation.hpp"
 #include "netsph/distributed/thread_collectives.hpp"
 #include "state_difference.hpp"
@@ -25,13 +27,23 @@ struct SplitRun {
   std::unique_ptr<Simulation> whole;  // every process's particles, gathered
   std::vector<double> dts;
   std::vector<std::size_t> owned;  // particles each process owned at the end
+  std::vector<double> work;        // each process's own work at the end (own_work)
+  int rebalances = 0;
   std::vector<std::string> errors;
+
+  /// The busiest process's own work at the end over the mean.
+  double imbalance() const {
+    double total = 0, busiest = 0;
+    for (const double w : work) total += w, busiest = std::max(busiest, w);
+    return busiest * static_cast<double>(work.size()) / total;
+  }
 };
 
-SplitRun run_split(const CaseSpec& spec, int processes, int steps) {
+SplitRun run_split(const CaseSpec& spec, int processes, int steps, RebalancePolicy policy = {}) {
   SplitRun run;
   run.whole = std::make_unique<Simulation>(spec);
   run.owned.resize(processes);
+  run.work.resize(processes);
   run.errors.resize(processes);
   ThreadTeam team(processes);
   std::vector<std::thread> threads;
@@ -40,12 +52,14 @@ SplitRun run_split(const CaseSpec& spec, int processes, int steps) {
       omp_set_num_threads(1);
       try {
         ThreadCollectives coll(team, r);
-        DistributedSimulation sim(spec, coll);
+        DistributedSimulation sim(spec, coll, nullptr, policy);
         for (int s = 0; s < steps; ++s) {
           sim.step();
           if (r == 0) run.dts.push_back(sim.local().last_dt());
         }
         run.owned[r] = sim.owned_count();
+        run.work[r] = sim.own_work();
+        if (r == 0) run.rebalances = sim.rebalances();
         sim.gather_into(r == 0 ? run.whole.get() : nullptr, true);
       } catch (const std::exception& e) {
         run.errors[r] = e.what();
@@ -56,12 +70,13 @@ SplitRun run_split(const CaseSpec& spec, int processes, int steps) {
   return run;
 }
 
-Difference compare_split(const CaseSpec& spec, int processes, int steps) {
+Difference compare_split(const CaseSpec& spec, int processes, int steps,
+                         RebalancePolicy policy = {}, SplitRun* kept = nullptr) {
   Simulation one(spec);
   const std::uint32_t created_ids = one.particles().next_id;
   std::vector<double> dts;
   for (int s = 0; s < steps; ++s) one.step(), dts.push_back(one.last_dt());
-  const SplitRun split = run_split(spec, processes, steps);
+  SplitRun split = run_split(spec, processes, steps, policy);
   for (const std::string& e : split.errors) EXPECT_EQ(e, "");
   std::size_t owned = 0;
   for (int r = 0; r < processes; ++r) {
@@ -78,6 +93,7 @@ Difference compare_split(const CaseSpec& spec, int processes, int steps) {
   Difference d = test::state_difference(one, *split.whole, created_ids);
   for (std::size_t s = 0; s < dts.size() && s < split.dts.size(); ++s)
     d.dt = std::max(d.dt, std::fabs(split.dts[s] / dts[s] - 1));
+  if (kept) *kept = std::move(split);
   return d;
 }
 
@@ -85,6 +101,43 @@ Difference compare_split(const CaseSpec& spec, int processes, int steps) {
 TEST(Distributed, DamBreak2DOnThreeProcessesMatchesOne) {
   const CaseSpec spec = test::load_case("dambreak2d.toml", {"simulation.dp=0.04"});
   test::expect_parity(compare_split(spec, 3, 200));
+}
+
+// As the water column collapses and runs along the tank, the slabs cut at the start leave the
+// process at the front with little water and the others with more: the slabs are cut again
+// (RebalancePolicy), and the particles that changed slab move at once. Over the 1500 steps
+// (0.75 s: the surge reaches the far wall) the two runs' results drift apart as any two
+// decompositions' do once the surge breaks (one process against three: 0.007 dp with or
+// without rebalancing), so the results are compared below over a shorter run.
+TEST(Distributed, SlabsAreCutAgainAsTheDamBreaks) {
+  const CaseSpec spec = test::load_case("dambreak2d.toml", {"simulation.dp=0.04"});
+  const int steps = 1500;
+  const SplitRun fixed = run_split(spec, 3, steps, RebalancePolicy{0});
+  const SplitRun moving = run_split(spec, 3, steps);
+  std::printf(
+      "after %d steps, busiest process's own work over the mean: %.3f with the slabs cut "
+      "once, %.3f cut again %d times\n",
+      steps, fixed.imbalance(), moving.imbalance(), moving.rebalances);
+  for (const SplitRun* run : {&fixed, &moving}) {
+    for (const std::string& e : run->errors) EXPECT_EQ(e, "");
+    std::size_t owned = 0;
+    for (const std::size_t n : run->owned) owned += n;
+    EXPECT_EQ(owned, run->whole->particles().size()) << "particles doubled or lost";
+  }
+  EXPECT_EQ(fixed.rebalances, 0);
+  EXPECT_GT(fixed.imbalance(), 1.3) << "the flow no longer unbalances the slabs: test nothing";
+  EXPECT_GT(moving.rebalances, 0);
+  EXPECT_LE(moving.imbalance(), RebalancePolicy{}.threshold);
+}
+
+// Cut again early and often (at 2% out of balance, every 10 steps): the results are those of
+// one process to round-off.
+TEST(Distributed, SlabsCutAgainGiveTheResultsOfOneProcess) {
+  const CaseSpec spec = test::load_case("dambreak2d.toml", {"simulation.dp=0.04"});
+  SplitRun split;
+  test::expect_parity(compare_split(spec, 3, 800, RebalancePolicy{10, 1.02}, &split));
+  std::printf("slabs cut again %d times\n", split.rebalances);
+  EXPECT_GE(split.rebalances, 2);
 }
 
 // 3D, mDBC walls (the halo carries their ghost offsets), cubic spline kernel, shifting.
@@ -144,6 +197,32 @@ TEST(Distributed, OpenChannelOnTwoProcessesMatchesOne) {
 // The same with the knot, its twine and the inlet and outlet of the case as written.
 TEST(Distributed, CoupledNetWithInletAndOutletOnTwoProcessesMatchesOne) {
   test::expect_parity(compare_split(test::load_case("net_tethered_knot.toml"), 2, 40));
+}
+
+TEST(Distributed, CutsFallOnTheBinBoundariesNearestEqualShares) {
+  // Ten bins of 0.1 m from 1.0 m, the last partial (the domain ends at 1.95 m).
+  WorkHistogram h(1.0, 1.95, 0.1);
+  ASSERT_EQ(h.bins.size(), 10u);
+  for (int k = 0; k < 10; ++k) h.add(1.0 + 0.1 * k + 0.05, ParticleKind::Fluid);
+  h.add(0.2, ParticleKind::Fluid);  // below lo: the first bin (callers clamp)
+  h.add(1.31, ParticleKind::Wall);  // kSolidWork in bin 3
+  EXPECT_DOUBLE_EQ(h.bins[0], 2.0);
+  EXPECT_DOUBLE_EQ(h.bins[3], 1.0 + kSolidWork);
+  // Uniform work: equal slabs.
+  WorkHistogram u(0.0, 1.0, 0.1);
+  for (double& b : u.bins) b = 1.0;
+  const std::vector<double> halves = equal_work_cuts(u, 1.0, 2);
+  ASSERT_EQ(halves.size(), 3u);
+  EXPECT_DOUBLE_EQ(halves[0], 0.0);
+  EXPECT_NEAR(halves[1], 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(halves[2], 1.0);
+  // All the work in bins 7 and 8: the cut between them, the others kept a bin apart.
+  for (double& b : u.bins) b = 0.0;
+  u.bins[7] = u.bins[8] = 50.0;
+  const std::vector<double> peak = equal_work_cuts(u, 1.0, 4);
+  EXPECT_NEAR(peak[2], 0.8, 1e-12);  // half the work on each side
+  for (int r = 0; r < 4; ++r) EXPECT_GE(peak[r + 1] - peak[r], 0.1 - 1e-12) << r;
+  EXPECT_THROW(equal_work_cuts(u, 1.0, 11), Error);  // fewer bins than slabs
 }
 
 TEST(Distributed, SlabsBalanceParticlesAndOwnEveryPositionOnce) {

@@ -174,7 +174,8 @@ int run_command(const RunArgs& args) {
   std::unique_ptr<RunStepper> stepper;
   const auto built = std::chrono::steady_clock::now();
   if (coll) {
-    stepper = std::make_unique<DistributedStepper>(spec, *coll, restart ? &checkpoint : nullptr);
+    stepper = std::make_unique<DistributedStepper>(spec, *coll, restart ? &checkpoint : nullptr,
+                                                   RebalancePolicy{args.rebalance_every});
   } else {
     check_case_fits_memory(spec, backend);
     sim = std::make_unique<Simulation>(spec, step_backend(backend));

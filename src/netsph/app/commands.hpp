@@ -31,6 +31,9 @@ struct RunArgs {
   bool quiet = false;
   bool plots = true;        ///< PNG plots at the end (when matplotlib is there)
   std::string restart_dir;  ///< continue the run in this folder from its checkpoint
+  /// Distributed runs: steps between checks of the slabs' balance (0: never cut again;
+  /// RebalancePolicy).
+  int rebalance_every = 20;
 };
 int run_command(const RunArgs& args);
 

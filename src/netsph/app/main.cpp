@@ -67,6 +67,13 @@ int main(int argc, char** argv) {
                     "progress as periodic lines, not a bar");
   run_cmd->add_option("--restart", run.restart_dir,
                       "continue the run in this output folder from its checkpoint.h5");
+  run_cmd
+      ->add_option("--rebalance-every", run.rebalance_every,
+                   "under mpirun: steps between checks of the processes' balance; the slabs are "
+                   "cut again when the busiest process's own work exceeds the mean by 10% (0: "
+                   "keep the slabs cut at the start)")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
   bool no_plots = false;
   run_cmd->add_flag("--no-plots", no_plots, "do not write PNG plots at the end");
 

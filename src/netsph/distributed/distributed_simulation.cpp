@@ -16,12 +16,18 @@ std::unique_ptr<Simulation> whole_scene(const CaseSpec& spec, const CheckpointDa
   return sim;
 }
 
+std::vector<ZoneGeometry> zone_geometries(const Simulation& sim) {
+  std::vector<ZoneGeometry> zones;
+  for (const OpenBoundaryZone& z : sim.scene().zones) zones.push_back(z.geometry());
+  return zones;
+}
+
 SlabPartition make_slabs(const Simulation& sim, int ranks) {
   SlabPartition s = balanced_slabs(sim.particles(), sim.grid(), sim.scene().domain_min,
                                    sim.scene().domain_max, ranks);
-  std::vector<ZoneGeometry> zones;
-  for (const OpenBoundaryZone& z : sim.scene().zones) zones.push_back(z.geometry());
-  s.halo = halo_width(s, sim.particles(), sim.grid(), sim.model().support, zones);
+  const std::vector<ZoneGeometry> zones = zone_geometries(sim);
+  s.halo = halo_width(s, ghost_reach(s.axis, sim.particles(), zones), sim.grid(),
+                      sim.model().support, zones);
   return s;
 }
 
@@ -34,12 +40,16 @@ Bytes pack_lost(const std::vector<StepDiagnostics::Lost>& lost) {
 }  // namespace
 
 DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& coll,
-                                             const CheckpointData* resume)
+                                             const CheckpointData* resume,
+                                             RebalancePolicy rebalance)
     : coll_(coll),
       local_(whole_scene(spec, resume)),
       slabs_(make_slabs(*local_, coll.size())),
-      exchange_(slabs_, coll) {
+      exchange_(slabs_, coll),
+      rebalance_(rebalance),
+      zones_(zone_geometries(*local_)) {
   Simulation& sim = *local_;
+  ghost_reach_ = ghost_reach(slabs_.axis, sim.particles(), zones_);
   initial_fluid_ = sim.initial_fluid();
   // A restored run's counts so far are the whole run's: every process starts from them and
   // adds only its own events.
@@ -96,8 +106,64 @@ void DistributedSimulation::step() {
   }
   Simulation& sim = *local_;
   const ExchangeReport report = exchange_.exchange(sim.particles(), sim.grid());
-  exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   check_lost(report);
+  if (rebalance_.check_every > 0 && sim.steps() % rebalance_.check_every == 0)
+    rebalance_if_needed();
+  exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+}
+
+double DistributedSimulation::own_work() const {
+  const ParticleSet& p = local_->particles();
+  double w = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (exchange_.owned(p.id[i])) w += particle_work(p.kind[i]);
+  return w;
+}
+
+void DistributedSimulation::rebalance_if_needed() {
+  // Each process's own work, known to all.
+  std::vector<double> shares(coll_.size(), 0.0);
+  shares[coll_.rank()] = own_work();
+  coll_.sum(shares);
+  const auto imbalance = [&](const std::vector<double>& s) {
+    double total = 0, busiest = 0;
+    for (const double w : s) total += w, busiest = std::max(busiest, w);
+    return total > 0 ? busiest * static_cast<double>(s.size()) / total : 1.0;
+  };
+  const double before = imbalance(shares);
+  if (!(before > rebalance_.threshold)) return;
+  // The whole run's work along the axis: every process's own particles, summed.
+  Simulation& sim = *local_;
+  const ParticleSet& p = sim.particles();
+  const double lo = slabs_.cuts.front(), hi = slabs_.cuts.back();
+  WorkHistogram work(lo, hi, sim.grid().cell_size()[slabs_.axis]);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (exchange_.owned(p.id[i]))
+      work.add(std::clamp(slabs_.coordinate(p.pos[i]), lo, hi), p.kind[i]);
+  }
+  coll_.sum(work.bins);
+  const std::vector<double> cuts = equal_work_cuts(work, hi, coll_.size());
+  if (cuts == slabs_.cuts) return;  // the best cut on cell boundaries already
+  // The new slabs' work, from the same histogram (the cuts lie on its bin boundaries).
+  std::vector<double> after(coll_.size(), 0.0);
+  for (std::size_t k = 0; k < work.bins.size(); ++k) {
+    const double centre = lo + (static_cast<double>(k) + 0.5) * work.cell;
+    const auto slab = std::upper_bound(cuts.begin() + 1, cuts.end() - 1, centre) - cuts.begin() - 1;
+    after[slab] += work.bins[k];
+  }
+  slabs_.cuts = cuts;
+  slabs_.halo = halo_width(slabs_, ghost_reach_, sim.grid(), sim.model().support, zones_);
+  exchange_.slabs_changed();
+  check_lost(exchange_.exchange(sim.particles(), sim.grid()));
+  ++rebalances_;
+  if (coll_.rank() == 0) {
+    std::string at;
+    for (double c : cuts) at += fmt::format("{}{:.4g}", at.empty() ? "" : ", ", c);
+    spdlog::debug(
+        "step {}: slabs cut again at {} m: the busiest process's own work {:.3f} of "
+        "the mean, now {:.3f}",
+        sim.steps(), at, before, imbalance(after));
+  }
 }
 
 namespace {

@@ -7,10 +7,14 @@
 // advanced by every process alike from the summed loads. The outputs read a whole Simulation
 // on process 0, which gather_into() fills when they need particles.
 //
-// Not yet distributed: the device backends. Each
-// process builds the whole scene (or restores a whole checkpoint) before keeping its part, so
-// the set-up needs the memory of the whole case on every process, and the slabs are cut once,
-// at the start (no rebalancing as the flow moves particles between them).
+// The slabs are cut again as the flow moves particles between them (RebalancePolicy): every
+// few steps the processes compare their own work (particle counts weighted as at the start),
+// and when the busiest is above the mean by the threshold, the cuts are chosen anew from the
+// summed histograms of their particles and the particles that changed slab move at once.
+//
+// Not yet distributed: the device backends. Each process builds the whole scene (or restores
+// a whole checkpoint) before keeping its part, so the set-up needs the memory of the whole
+// case on every process.
 #include <memory>
 
 #include "netsph/distributed/collectives.hpp"
@@ -21,13 +25,23 @@
 
 namespace netsph {
 
+/// When a distributed run cuts its slabs again.
+struct RebalancePolicy {
+  /// Steps between two comparisons of the processes' own work (one reduction of a number per
+  /// process); 0: the slabs stay as cut at the start.
+  int check_every = 20;
+  /// Cut again when the busiest process's own work exceeds the mean by this factor: the
+  /// others wait for it in every reduction of the step.
+  double threshold = 1.1;
+};
+
 class DistributedSimulation final : public StepPartition {
  public:
   /// Collective. Throws netsph::Error (on every process alike) for more processes than the
   /// domain has cells along its axis, or another backend than the CPU's. `resume`:
   /// a checkpoint (of a run on any number of processes) to continue from, or null.
   DistributedSimulation(const CaseSpec& spec, Collectives& coll,
-                        const CheckpointData* resume = nullptr);
+                        const CheckpointData* resume = nullptr, RebalancePolicy rebalance = {});
   ~DistributedSimulation() override;
 
   /// One step on every process (collective). Throws SimulationUnstable on every process alike
@@ -53,6 +67,10 @@ class DistributedSimulation final : public StepPartition {
   double work_seconds() const { return step_seconds_ - wait_seconds_; }
   double wait_seconds() const { return wait_seconds_; }
   double exchange_seconds() const { return exchange_seconds_; }
+  /// How many times the slabs were cut again.
+  int rebalances() const { return rebalances_; }
+  /// This process's share of a step's work: its own particles weighted by particle_work.
+  double own_work() const;
 
   /// Collective: process 0 passes a Simulation of the same case, which receives every
   /// process's own particles and the run's time, bodies, nets and diagnostics; the others
@@ -67,6 +85,9 @@ class DistributedSimulation final : public StepPartition {
 
  private:
   void check_lost(const ExchangeReport& report);
+  /// Collective: cuts the slabs again if the processes' own work is out of balance, and moves
+  /// the particles that changed slab.
+  void rebalance_if_needed();
 
   Collectives& coll_;
   std::unique_ptr<Simulation> local_;
@@ -80,6 +101,11 @@ class DistributedSimulation final : public StepPartition {
   OpenBoundaryCounts open_base_;  // the restored run's events (every process has them)
   double step_seconds_ = 0, exchange_seconds_ = 0;
   mutable double wait_seconds_ = 0;  // in the reductions the step calls
+  RebalancePolicy rebalance_;
+  int rebalances_ = 0;
+  // What the halo width depends on besides the cuts, from the whole scene at the start.
+  GhostReach ghost_reach_;
+  std::vector<ZoneGeometry> zones_;
   std::vector<StepDiagnostics::Lost> last_lost_;
   StepDiagnostics diag_;
 };

@@ -8,8 +8,8 @@
 namespace netsph {
 
 DistributedStepper::DistributedStepper(const CaseSpec& spec, Collectives& coll,
-                                       const CheckpointData* resume)
-    : coll_(coll), sim_(spec, coll, resume) {
+                                       const CheckpointData* resume, RebalancePolicy rebalance)
+    : coll_(coll), sim_(spec, coll, resume, rebalance) {
   if (coll_.rank() == 0) {
     view_ = std::make_unique<Simulation>(spec, StepBackend::Cpu);
     if (resume) view_->restore_state(*resume);
@@ -38,7 +38,8 @@ void DistributedStepper::finish() {
     line += fmt::format("{}process {}: {:.1f} s working, {:.1f} s waiting, {:.1f} s exchanging",
                         line.empty() ? "" : "; ", r, t[0], t[1], t[2]);
   }
-  spdlog::info("distributed run: {}", line);
+  spdlog::info("distributed run: {}; slabs cut again {} time{}", line, sim_.rebalances(),
+               sim_.rebalances() == 1 ? "" : "s");
 }
 
 bool DistributedStepper::from_view_process(bool flag) {

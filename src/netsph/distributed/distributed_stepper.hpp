@@ -16,7 +16,7 @@ class DistributedStepper final : public RunStepper {
   /// Collective, like DistributedSimulation's constructor; `resume`: a checkpoint to continue
   /// from (written by a run on any number of processes), or null.
   DistributedStepper(const CaseSpec& spec, Collectives& coll,
-                     const CheckpointData* resume = nullptr);
+                     const CheckpointData* resume = nullptr, RebalancePolicy rebalance = {});
   ~DistributedStepper() override;
 
   const CaseSpec& spec() const override { return sim_.local().spec(); }

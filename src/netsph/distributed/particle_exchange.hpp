@@ -30,8 +30,12 @@ class ParticleExchange {
   /// From the whole scene, which every process builds alike: keeps this process's own
   /// particles and its halo, without communication.
   void distribute(ParticleSet& p);
-  /// After a step (collective). `grid` is the domain's (the simulation's).
+  /// After a step (collective), or after the slabs were cut again. `grid` is the domain's
+  /// (the simulation's).
   ExchangeReport exchange(ParticleSet& p, const CellGrid& grid);
+  /// The slabs were cut again (on every process alike): the next exchange sends the halo to
+  /// the new neighbours.
+  void slabs_changed() { halo_neighbours_ = slabs_.halo_neighbours(coll_.rank()); }
 
   bool owned(std::uint32_t id) const {
     return id / 64 < owned_.size() && (owned_[id / 64] >> (id % 64) & 1u);

@@ -53,15 +53,22 @@ std::vector<int> SlabPartition::halo_neighbours(int r) const {
   return out;
 }
 
-double halo_width(const SlabPartition& slabs, const ParticleSet& particles, const CellGrid& grid,
+GhostReach ghost_reach(int axis, const ParticleSet& particles,
+                       const std::vector<ZoneGeometry>& zones) {
+  GhostReach g;
+  g.ghost_nodes = !zones.empty();  // buffers take their state at ghost nodes
+  for (const Vec3f& v : particles.ghost) {
+    g.along_axis = std::max(g.along_axis, static_cast<double>(std::fabs(v[axis])));
+    g.ghost_nodes |= v.x != 0 || v.y != 0 || v.z != 0;
+  }
+  return g;
+}
+
+double halo_width(const SlabPartition& slabs, const GhostReach& ghosts, const CellGrid& grid,
                   double support, const std::vector<ZoneGeometry>& zones) {
   const int axis = slabs.axis;
-  double reach = 0;
-  bool ghost_nodes = !zones.empty();  // buffers take their state at ghost nodes
-  for (const Vec3f& g : particles.ghost) {
-    reach = std::max(reach, static_cast<double>(std::fabs(g[axis])));
-    ghost_nodes |= g.x != 0 || g.y != 0 || g.z != 0;
-  }
+  double reach = ghosts.along_axis;
+  const bool ghost_nodes = ghosts.ghost_nodes;
   const double stage = support + 2 * grid.max_displacement();
   const double base = (ghost_nodes ? 3 : 2) * stage;
   for (const ZoneGeometry& z : zones) {
@@ -75,6 +82,38 @@ double halo_width(const SlabPartition& slabs, const ParticleSet& particles, cons
     }
   }
   return reach + base;
+}
+
+WorkHistogram::WorkHistogram(double lo_, double hi, double cell_) : lo(lo_), cell(cell_) {
+  bins.assign(static_cast<std::size_t>(std::max(1.0, std::ceil((hi - lo) / cell - 1e-9))), 0.0);
+}
+
+void WorkHistogram::add(double a, ParticleKind kind) {
+  const double f = std::floor((a - lo) / cell);
+  const auto k = static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(bins.size() - 1)));
+  bins[k] += particle_work(kind);
+}
+
+std::vector<double> equal_work_cuts(const WorkHistogram& work, double hi, int ranks) {
+  const auto n = static_cast<int>(work.bins.size());
+  if (ranks > n) {
+    throw Error("distributed", fmt::format("{} slabs cannot be cut from {} cells", ranks, n));
+  }
+  std::vector<double> below(n + 1, 0.0);  // work in the bins before bin k
+  for (int k = 0; k < n; ++k) below[k + 1] = below[k] + work.bins[k];
+  std::vector<double> cuts(ranks + 1, work.lo);
+  cuts.back() = hi;
+  int prev = 0;  // bin boundary of the previous cut
+  for (int r = 1; r < ranks; ++r) {
+    const double target = below[n] * r / ranks;
+    int k = static_cast<int>(std::lower_bound(below.begin(), below.end(), target) - below.begin());
+    if (k > 0 && target - below[k - 1] < below[k] - target) --k;  // the nearer boundary
+    // At least one bin from the previous cut, and room for the slabs after it.
+    k = std::clamp(k, prev + 1, n - (ranks - r));
+    cuts[r] = work.lo + k * work.cell;
+    prev = k;
+  }
+  return cuts;
 }
 
 SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
@@ -100,31 +139,15 @@ SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
                             "m): use at most {} processes",
                             ranks, cells, "xyz"[s.axis], cell, cells));
   }
+  // Equal shares of the step's work: a fluid (or buffer) particle sums momentum, continuity and
+  // diffusion over its neighbours, a wall or body particle only its density and the viscous
+  // criterion over its fluid neighbours (kSolidWork).
   s.cuts.assign(ranks + 1, lo);
   s.cuts.back() = hi;  // the bounds coordinate() wraps into
-  // Cut at equal shares of the step's work: a fluid (or buffer) particle sums momentum,
-  // continuity and diffusion over its neighbours, a wall or body particle only its density
-  // and the viscous criterion over its fluid neighbours (kSolidWork).
-  std::vector<std::pair<double, double>> work;  // coordinate, weight
-  work.reserve(particles.size());
-  double total = 0;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const double w = carries_fluid(particles.kind[i]) ? 1.0 : kSolidWork;
-    work.emplace_back(std::clamp(s.coordinate(particles.pos[i]), lo, hi), w);
-    total += w;
-  }
-  std::sort(work.begin(), work.end());
-  std::size_t k = 0;
-  double below = 0;  // work of the particles before k
-  for (int r = 1; r < ranks; ++r) {
-    while (k < work.size() && below + work[k].second <= total * r / ranks)
-      below += work[k++].second;
-    const double q = k < work.size() ? work[k].first : lo + (hi - lo) * r / ranks;
-    // On a cell boundary, at least one cell from the previous cut and room for the rest.
-    double cut = lo + std::round((q - lo) / cell) * cell;
-    cut = std::clamp(cut, s.cuts[r - 1] + cell, hi - (ranks - r) * cell);
-    s.cuts[r] = cut;
-  }
+  WorkHistogram work(lo, hi, cell);
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    work.add(std::clamp(s.coordinate(particles.pos[i]), lo, hi), particles.kind[i]);
+  s.cuts = equal_work_cuts(work, hi, ranks);
   return s;
 }
 

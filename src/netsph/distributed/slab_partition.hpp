@@ -46,11 +46,45 @@ struct SlabPartition {
 /// was within 2% (123.0 and 120.7 s; docs/PERFORMANCE.md, "Distributed runs").
 inline constexpr double kSolidWork = 0.3;
 
+/// A particle's share of a step's work: 1 for a fluid (or buffer) particle, kSolidWork else.
+inline double particle_work(ParticleKind kind) {
+  return carries_fluid(kind) ? 1.0 : kSolidWork;
+}
+
+/// The work of the particles along a slab axis in bins one grid cell wide from the domain's
+/// low end (a fluid particle 1, a solid one kSolidWork): what the cuts are chosen from, at the
+/// start from the whole scene and when rebalancing from every process's own particles summed.
+struct WorkHistogram {
+  double lo = 0, cell = 1;
+  std::vector<double> bins;
+
+  /// Bins of `cell` over [lo, hi) (the last one may be partial).
+  WorkHistogram(double lo, double hi, double cell);
+  /// Adds a particle at coordinate a along the axis (wrapped or clamped by the caller).
+  void add(double a, ParticleKind kind);
+};
+
+/// Cuts `ranks` slabs from a histogram: cuts.front() and back() are lo and hi, the others on bin
+/// boundaries where the work below comes nearest to r / ranks of the total, each slab at least
+/// one bin wide. Throws netsph::Error when there are fewer bins than ranks.
+std::vector<double> equal_work_cuts(const WorkHistogram& work, double hi, int ranks);
+
 /// Slabs along the axis the particles spread furthest with equal shares of the work (fluid
 /// particles 1, solid ones kSolidWork); `halo` is left for halo_width. Throws netsph::Error naming
 /// the limit when the axis cannot hold `ranks` slabs at least one cell wide.
 SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
                              const Vec3d& domain_min, const Vec3d& domain_max, int ranks);
+
+/// What of the particles the halo width depends on (halo_width): the largest component along
+/// the slab axis of their mDBC ghost offsets, and whether anything is interpolated at ghost
+/// nodes. Taken from the whole scene at the start, so that every process uses the same halo
+/// when the slabs are cut again.
+struct GhostReach {
+  double along_axis = 0;  ///< m
+  bool ghost_nodes = false;
+};
+GhostReach ghost_reach(int axis, const ParticleSet& particles,
+                       const std::vector<ZoneGeometry>& zones);
 
 /// The halo width the step needs along the slabs' axis (see above), m: the largest component
 /// along the axis of the mDBC ghost offsets among `particles`, and of the open boundaries'
@@ -58,7 +92,7 @@ SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
 /// its width from it, a created particle its width behind its parent), plus three stages of
 /// the kernel support and the displacement the grid allows, or two when nothing is
 /// interpolated at ghost nodes (the walls' and buffers' state then comes from the pass).
-double halo_width(const SlabPartition& slabs, const ParticleSet& particles, const CellGrid& grid,
+double halo_width(const SlabPartition& slabs, const GhostReach& ghosts, const CellGrid& grid,
                   double support, const std::vector<ZoneGeometry>& zones);
 
 }  // namespace netsph
