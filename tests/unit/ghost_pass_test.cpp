@@ -118,7 +118,8 @@ std::vector<Vec3d> test_points(bool periodic_x) {
 }
 
 GhostSums pass_sums(const Block& b, const Vec3d& x) {
-  return ghost_sums_at<WendlandC2>(b.m, b.grid, b.view, x);
+  CellRangesMemo memo;
+  return ghost_sums_at<WendlandC2>(b.m, b.grid, b.view, x, memo);
 }
 
 TEST(GhostPass, SumsEqualABruteForceSumOverTheFlaggedParticles) {
@@ -130,6 +131,20 @@ TEST(GhostPass, SumsEqualABruteForceSumOverTheFlaggedParticles) {
       expect_same_sums(pass_sums(b, x), e, x);
     }
   }
+}
+
+TEST(GhostPass, OneMemoOverNodesInTheSameAndOtherCellsGivesEachItsOwnSums) {
+  // Nodes close together (one cell, as the ghost nodes of neighbouring wall particles), then
+  // elsewhere, then back, then across the periodic seam: the memo's ranges must be rebuilt
+  // whenever the cell changes and only then be reused.
+  const Block b = block(true);
+  const std::vector<Vec3d> pts{{0.060, 0.060, 0.060},    {0.0605, 0.0601, 0.0598},
+                               {0.0431, 0.0712, 0.0291}, {0.0602, 0.0603, 0.0601},
+                               {0.002, 0.06, 0.06},      {kL + 0.004, 0.05, 0.07},
+                               {kL - 0.003, 0.05, 0.07}};
+  CellRangesMemo memo;
+  for (const Vec3d& x : pts)
+    expect_same_sums(ghost_sums_at<WendlandC2>(b.m, b.grid, b.view, x, memo), brute_force(b, x), x);
 }
 
 TEST(GhostPass, ValuesAndFirstOrderFlagMatchTheBruteForceSolve) {
