@@ -106,10 +106,15 @@ void DistributedSimulation::step() {
   }
   Simulation& sim = *local_;
   const ExchangeReport report = exchange_.exchange(sim.particles(), sim.grid());
+  const auto t2 = std::chrono::steady_clock::now();
+  exchange_seconds_ += std::chrono::duration<double>(t2 - t1).count();
   check_lost(report);
-  if (rebalance_.check_every > 0 && sim.steps() % rebalance_.check_every == 0)
+  if (rebalance_.check_every > 0 && sim.steps() % rebalance_.check_every == 0) {
+    const auto t3 = std::chrono::steady_clock::now();
     rebalance_if_needed();
-  exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    exchange_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t3).count();
+  }
 }
 
 double DistributedSimulation::own_work() const {
