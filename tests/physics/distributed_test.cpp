@@ -32,11 +32,7 @@ struct SplitRun {
   std::vector<std::string> errors;
 
   /// The busiest process's own work at the end over the mean.
-  double imbalance() const {
-    double total = 0, busiest = 0;
-    for (const double w : work) total += w, busiest = std::max(busiest, w);
-    return busiest * static_cast<double>(work.size()) / total;
-  }
+  double imbalance() const { return work_imbalance(work); }
 };
 
 SplitRun run_split(const CaseSpec& spec, int processes, int steps, RebalancePolicy policy = {}) {

@@ -22,6 +22,13 @@ NETSPH_HD Vec3d nearest_image_correction(const Vec3d& d, const Vec3d& period) {
           nearest_image_correction(d.z, period.z)};
 }
 
+/// Coordinate x moved by whole periods into [lo, lo + period) (period > 0); bit for bit x when
+/// it is inside already.
+NETSPH_HD double wrapped_into_period(double x, double lo, double period) {
+  x -= period * std::floor((x - lo) / period);
+  return x >= lo + period ? lo : x;  // round-off just below the period's start
+}
+
 /// Offset d moved to its nearest image, |d| <= period / 2 along each periodic axis; bit for bit
 /// d when it is already nearest (d - 0).
 NETSPH_HD Vec3d nearest_image_offset(const Vec3d& d, const Vec3d& period) {

@@ -22,12 +22,11 @@ std::vector<ZoneGeometry> zone_geometries(const Simulation& sim) {
   return zones;
 }
 
-SlabPartition make_slabs(const Simulation& sim, int ranks) {
+SlabPartition make_slabs(const Simulation& sim, int ranks, const GhostReach& ghosts,
+                         const std::vector<ZoneGeometry>& zones) {
   SlabPartition s = balanced_slabs(sim.particles(), sim.grid(), sim.scene().domain_min,
                                    sim.scene().domain_max, ranks);
-  const std::vector<ZoneGeometry> zones = zone_geometries(sim);
-  s.halo = halo_width(s, ghost_reach(s.axis, sim.particles(), zones), sim.grid(),
-                      sim.model().support, zones);
+  s.halo = halo_width(s, ghosts, sim.grid(), sim.model().support, zones);
   return s;
 }
 
@@ -44,12 +43,12 @@ DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& 
                                              RebalancePolicy rebalance)
     : coll_(coll),
       local_(whole_scene(spec, resume)),
-      slabs_(make_slabs(*local_, coll.size())),
+      zones_(zone_geometries(*local_)),
+      ghost_reach_(ghost_reach(local_->particles(), zones_)),
+      slabs_(make_slabs(*local_, coll.size(), ghost_reach_, zones_)),
       exchange_(slabs_, coll),
-      rebalance_(rebalance),
-      zones_(zone_geometries(*local_)) {
+      rebalance_(rebalance) {
   Simulation& sim = *local_;
-  ghost_reach_ = ghost_reach(slabs_.axis, sim.particles(), zones_);
   initial_fluid_ = sim.initial_fluid();
   // A restored run's counts so far are the whole run's: every process starts from them and
   // adds only its own events.
@@ -130,12 +129,7 @@ void DistributedSimulation::rebalance_if_needed() {
   std::vector<double> shares(coll_.size(), 0.0);
   shares[coll_.rank()] = own_work();
   coll_.sum(shares);
-  const auto imbalance = [&](const std::vector<double>& s) {
-    double total = 0, busiest = 0;
-    for (const double w : s) total += w, busiest = std::max(busiest, w);
-    return total > 0 ? busiest * static_cast<double>(s.size()) / total : 1.0;
-  };
-  const double before = imbalance(shares);
+  const double before = work_imbalance(shares);
   if (!(before > rebalance_.threshold)) return;
   // The whole run's work along the axis: every process's own particles, summed.
   Simulation& sim = *local_;
@@ -167,7 +161,7 @@ void DistributedSimulation::rebalance_if_needed() {
     spdlog::debug(
         "step {}: slabs cut again at {} m: the busiest process's own work {:.3f} of "
         "the mean, now {:.3f}",
-        sim.steps(), at, before, imbalance(after));
+        sim.steps(), at, before, work_imbalance(after));
   }
 }
 

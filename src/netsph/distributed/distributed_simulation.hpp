@@ -91,7 +91,10 @@ class DistributedSimulation final : public StepPartition {
 
   Collectives& coll_;
   std::unique_ptr<Simulation> local_;
-  SlabPartition slabs_;
+  // What the halo width depends on besides the cuts, from the whole scene at the start.
+  std::vector<ZoneGeometry> zones_;
+  GhostReach ghost_reach_;
+  SlabPartition slabs_;            // after the two above, which its halo width needs
   ParticleExchange exchange_;      // after slabs_, which it refers to
   std::size_t initial_fluid_ = 0;  // of the whole case
   std::uint64_t lost_total_ = 0;   // over all processes
@@ -103,9 +106,6 @@ class DistributedSimulation final : public StepPartition {
   mutable double wait_seconds_ = 0;  // in the reductions the step calls
   RebalancePolicy rebalance_;
   int rebalances_ = 0;
-  // What the halo width depends on besides the cuts, from the whole scene at the start.
-  GhostReach ghost_reach_;
-  std::vector<ZoneGeometry> zones_;
   std::vector<StepDiagnostics::Lost> last_lost_;
   StepDiagnostics diag_;
 };

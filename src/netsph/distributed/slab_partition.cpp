@@ -6,17 +6,14 @@
 #include <fmt/format.h>
 
 #include "netsph/core/error.hpp"
+#include "netsph/core/periodic_image.hpp"
 
 namespace netsph {
 
 double SlabPartition::coordinate(const Vec3d& p) const {
-  const double lo = cuts.front(), length = cuts.back() - cuts.front();
-  double a = p[axis];
-  if (periodic && std::isfinite(a)) {
-    a = lo + (a - lo) - length * std::floor((a - lo) / length);
-    if (a >= cuts.back()) a = lo;  // round-off of the wrap
-  }
-  return a;
+  const double a = p[axis];
+  if (!periodic || !std::isfinite(a)) return a;
+  return wrapped_into_period(a, cuts.front(), cuts.back() - cuts.front());
 }
 
 int SlabPartition::owner_of(const Vec3d& p) const {
@@ -53,21 +50,27 @@ std::vector<int> SlabPartition::halo_neighbours(int r) const {
   return out;
 }
 
-GhostReach ghost_reach(int axis, const ParticleSet& particles,
-                       const std::vector<ZoneGeometry>& zones) {
+GhostReach ghost_reach(const ParticleSet& particles, const std::vector<ZoneGeometry>& zones) {
   GhostReach g;
   g.ghost_nodes = !zones.empty();  // buffers take their state at ghost nodes
   for (const Vec3f& v : particles.ghost) {
-    g.along_axis = std::max(g.along_axis, static_cast<double>(std::fabs(v[axis])));
+    for (int a = 0; a < 3; ++a)
+      g.along[a] = std::max(g.along[a], static_cast<double>(std::fabs(v[a])));
     g.ghost_nodes |= v.x != 0 || v.y != 0 || v.z != 0;
   }
   return g;
 }
 
+double work_imbalance(std::span<const double> shares) {
+  double total = 0, busiest = 0;
+  for (const double w : shares) total += w, busiest = std::max(busiest, w);
+  return total > 0 ? busiest * static_cast<double>(shares.size()) / total : 1.0;
+}
+
 double halo_width(const SlabPartition& slabs, const GhostReach& ghosts, const CellGrid& grid,
                   double support, const std::vector<ZoneGeometry>& zones) {
   const int axis = slabs.axis;
-  double reach = ghosts.along_axis;
+  double reach = ghosts.along[axis];
   const bool ghost_nodes = ghosts.ghost_nodes;
   const double stage = support + 2 * grid.max_displacement();
   const double base = (ghost_nodes ? 3 : 2) * stage;

@@ -13,6 +13,7 @@
 // predictor) one more. So the halo is the ghost offset along the axis + 3 supports (+ the
 // distance particles may move in a step) wide (halo_width), and the owned particles' results
 // are those of one process to round-off, without a second exchange at the half step.
+#include <span>
 #include <vector>
 
 #include "netsph/boundary/open_boundary.hpp"
@@ -76,15 +77,17 @@ SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
                              const Vec3d& domain_min, const Vec3d& domain_max, int ranks);
 
 /// What of the particles the halo width depends on (halo_width): the largest component along
-/// the slab axis of their mDBC ghost offsets, and whether anything is interpolated at ghost
-/// nodes. Taken from the whole scene at the start, so that every process uses the same halo
-/// when the slabs are cut again.
+/// each axis of their mDBC ghost offsets, and whether anything is interpolated at ghost nodes.
+/// Taken from the whole scene at the start, so that every process uses the same halo when the
+/// slabs are cut again.
 struct GhostReach {
-  double along_axis = 0;  ///< m
+  Vec3d along{};  ///< m, per axis
   bool ghost_nodes = false;
 };
-GhostReach ghost_reach(int axis, const ParticleSet& particles,
-                       const std::vector<ZoneGeometry>& zones);
+GhostReach ghost_reach(const ParticleSet& particles, const std::vector<ZoneGeometry>& zones);
+
+/// The busiest process's share of the work over the mean (1: balanced).
+double work_imbalance(std::span<const double> shares);
 
 /// The halo width the step needs along the slabs' axis (see above), m: the largest component
 /// along the axis of the mDBC ghost offsets among `particles`, and of the open boundaries'

@@ -8,6 +8,7 @@
 
 #include "netsph/boundary/wall_ghosts.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/core/periodic_image.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
 
@@ -26,9 +27,7 @@ void wrap_body_particles(const CaseSpec& spec, ParticleSet& p) {
     if (!(period > 0)) continue;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (p.kind[i] != ParticleKind::Body) continue;
-      double& x = p.pos[i][a];
-      x -= period * std::floor((x - lo) / period);
-      if (x >= lo + period) x = lo;  // round-off just below the period's start
+      p.pos[i][a] = wrapped_into_period(p.pos[i][a], lo, period);
     }
   }
 }

@@ -520,13 +520,12 @@ class DeviceStepper {
     const DeviceView v = step_arrays().view;
     const ContactModel c = s_.contact;
     const double mass = s_.model.mass;
-    const Vec3d period = g.period;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t a) {
       const Vec3f acc = device_contact_particle(g, begin, keys, st.kind, st.group, v, c, a);
       if (acc.x == 0 && acc.y == 0 && acc.z == 0) return;
       const std::uint32_t b = st.group[a];
       double load[6];
-      device_particle_load(rigid_lever_arm(bodies[b].state, st.pos[a], period), acc, mass, load);
+      device_particle_load(rigid_lever_arm(bodies[b].state, st.pos[a], g.period), acc, mass, load);
       for (int k = 0; k < 6; ++k) {
         if (load[k] != 0) Exec::atomic_add(loads + 12 * b + 6 + k, load[k]);
       }
