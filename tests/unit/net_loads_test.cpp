@@ -52,6 +52,36 @@ TEST(ScreenModel, MatchesTheReferenceTable) {
   EXPECT_NEAR(s3_05.lift, 0.048, 0.001);
 }
 
+// The coefficients come from cos(theta) through trigonometric identities; here each set's
+// published form in theta, written with the trigonometric functions, at angles where every
+// multiple-angle term is non-zero and differs from its neighbours.
+TEST(ScreenModel, CosineFormIsThePublishedFormInTheta) {
+  const double sn = netting_solidity(0.029, 0.0028), re = reynolds(0.3);
+  const double cd_cyl = cylinder_drag_coefficient(re), open = 1 - sn;
+  const double cd0 = cd_cyl * sn * (2 - sn) / (2 * open * open);
+  const double cn45 = 0.5 * cd_cyl * sn / (open * open);
+  const double cl45 = (0.5 * cd0 - std::numbers::pi * cn45 / (8 + cn45)) / std::numbers::sqrt2;
+  using S = ScreenCoefficients;
+  for (double deg : {0.0, 7.0, 20.0, 33.0, 45.0, 58.0, 71.0, 84.0, 90.0}) {
+    const double t = deg * std::numbers::pi / 180, c = std::cos(t);
+    const auto s1 = screen_coefficients_at_cos(S::S1Aarsnes, sn, c, re);
+    EXPECT_NEAR(s1.drag, 0.04 + (-0.04 + sn - 1.24 * sn * sn + 13.7 * std::pow(sn, 3)) * c, 1e-14);
+    EXPECT_NEAR(s1.lift, (0.57 * sn - 3.54 * sn * sn + 10.1 * std::pow(sn, 3)) * std::sin(2 * t),
+                1e-14)
+        << deg;
+    const auto s2 = screen_coefficients_at_cos(S::S2Loland, sn, c, re);
+    EXPECT_NEAR(s2.lift, (-0.05 * sn + 2.3 * sn * sn - 1.76 * std::pow(sn, 3)) * std::sin(2 * t),
+                1e-14)
+        << deg;
+    const auto s3 = screen_coefficients_at_cos(S::S3KristiansenFaltinsen, sn, c, re);
+    EXPECT_NEAR(s3.drag, cd0 * (0.9 * std::cos(t) + 0.1 * std::cos(3 * t)), 1e-14) << deg;
+    EXPECT_NEAR(s3.lift, cl45 * (std::sin(2 * t) + 0.1 * std::sin(4 * t)), 1e-14) << deg;
+  }
+  // Outside [0, 1] (round-off in a dot product) the cosine is held at the nearer end.
+  EXPECT_EQ(screen_coefficients_at_cos(S::S2Loland, sn, 1 + 1e-15, re).lift, 0.0);
+  EXPECT_EQ(screen_coefficients_at_cos(S::S2Loland, sn, -1e-15, re).drag, 0.04);
+}
+
 TEST(ScreenModel, CylinderDragStaysBounded) {
   for (double re = 1; re < 1e7; re *= 1.5) {
     const double cd = cylinder_drag_coefficient(re);

@@ -35,9 +35,8 @@ void add_screen_loads(const NetModel& net, const CurrentLoadParameters& p,
     Vec3d n = knot_normal(net, k.row, k.column);
     if (dot(n, u) < 0) n = -n;  // lift points along the normal's cross-flow part
     const double cos_theta = std::min(1.0, dot(n, u) / speed);
-    const double theta = std::acos(cos_theta);
     const double reynolds = speed * net.twine_diameter / (p.kinematic_viscosity * (1 - sn));
-    const ScreenForceCoefficients c = screen_coefficients(p.screen, sn, theta, reynolds);
+    const ScreenForceCoefficients c = screen_coefficients_at_cos(p.screen, sn, cos_theta, reynolds);
     const Vec3d drag_dir = u / speed;
     Vec3d lift_dir = n - drag_dir * cos_theta;  // (u x n) x u / |u|^2
     const double lift_norm = norm(lift_dir);
