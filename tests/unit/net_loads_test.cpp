@@ -14,7 +14,7 @@
 namespace netsph {
 namespace {
 
-constexpr double kDeg45 = std::numbers::pi / 4;
+const double kCos45 = std::cos(std::numbers::pi / 4);
 
 double reynolds(double u) {
   const double sn = netting_solidity(0.029, 0.0028);
@@ -27,27 +27,29 @@ TEST(ScreenModel, MatchesTheReferenceTable) {
   EXPECT_NEAR(reynolds(0.125), 427, 1);
   using S = ScreenCoefficients;
   // U = 0.125 m/s
-  EXPECT_NEAR(screen_coefficients(S::S1Aarsnes, sn, 0, reynolds(0.125)).drag, 0.227, 0.001);
-  EXPECT_NEAR(screen_coefficients(S::S2Loland, sn, 0, reynolds(0.125)).drag, 0.251, 0.001);
-  EXPECT_NEAR(screen_coefficients(S::S3KristiansenFaltinsen, sn, 0, reynolds(0.125)).drag, 0.297,
-              0.001);
-  const auto s1 = screen_coefficients(S::S1Aarsnes, sn, kDeg45, reynolds(0.125));
+  EXPECT_NEAR(screen_coefficients_at_cos(S::S1Aarsnes, sn, 1, reynolds(0.125)).drag, 0.227, 0.001);
+  EXPECT_NEAR(screen_coefficients_at_cos(S::S2Loland, sn, 1, reynolds(0.125)).drag, 0.251, 0.001);
+  EXPECT_NEAR(screen_coefficients_at_cos(S::S3KristiansenFaltinsen, sn, 1, reynolds(0.125)).drag,
+              0.297, 0.001);
+  const auto s1 = screen_coefficients_at_cos(S::S1Aarsnes, sn, kCos45, reynolds(0.125));
   EXPECT_NEAR(s1.drag, 0.172, 0.001);
   EXPECT_NEAR(s1.lift, 0.048, 0.001);
-  const auto s2 = screen_coefficients(S::S2Loland, sn, kDeg45, reynolds(0.125));
+  const auto s2 = screen_coefficients_at_cos(S::S2Loland, sn, kCos45, reynolds(0.125));
   EXPECT_NEAR(s2.drag, 0.189, 0.001);
   EXPECT_NEAR(s2.lift, 0.058, 0.001);
-  const auto s3 = screen_coefficients(S::S3KristiansenFaltinsen, sn, kDeg45, reynolds(0.125));
+  const auto s3 =
+      screen_coefficients_at_cos(S::S3KristiansenFaltinsen, sn, kCos45, reynolds(0.125));
   EXPECT_NEAR(s3.drag, 0.168, 0.001);
   EXPECT_NEAR(s3.lift, 0.061, 0.001);
   // U = 0.25, 0.5, 0.75 m/s at normal incidence, and 0.5 at 45 degrees (S3)
-  EXPECT_NEAR(screen_coefficients(S::S3KristiansenFaltinsen, sn, 0, reynolds(0.25)).drag, 0.259,
-              0.001);
-  EXPECT_NEAR(screen_coefficients(S::S3KristiansenFaltinsen, sn, 0, reynolds(0.5)).drag, 0.238,
-              0.001);
-  EXPECT_NEAR(screen_coefficients(S::S3KristiansenFaltinsen, sn, 0, reynolds(0.75)).drag, 0.240,
-              0.001);
-  const auto s3_05 = screen_coefficients(S::S3KristiansenFaltinsen, sn, kDeg45, reynolds(0.5));
+  EXPECT_NEAR(screen_coefficients_at_cos(S::S3KristiansenFaltinsen, sn, 1, reynolds(0.25)).drag,
+              0.259, 0.001);
+  EXPECT_NEAR(screen_coefficients_at_cos(S::S3KristiansenFaltinsen, sn, 1, reynolds(0.5)).drag,
+              0.238, 0.001);
+  EXPECT_NEAR(screen_coefficients_at_cos(S::S3KristiansenFaltinsen, sn, 1, reynolds(0.75)).drag,
+              0.240, 0.001);
+  const auto s3_05 =
+      screen_coefficients_at_cos(S::S3KristiansenFaltinsen, sn, kCos45, reynolds(0.5));
   EXPECT_NEAR(s3_05.drag, 0.134, 0.001);
   EXPECT_NEAR(s3_05.lift, 0.048, 0.001);
 }
@@ -143,7 +145,7 @@ TEST(ScreenLoads, FlatNetFacingTheFlowFeelsTheScreenDrag) {
   add_current_loads(net, p, f);
   Vec3d total{};
   for (const Vec3d& v : f) total += v;
-  const double cd = screen_coefficients(p.screen, net.real_solidity, 0, 0).drag;
+  const double cd = screen_coefficients_at_cos(p.screen, net.real_solidity, 1, 0).drag;
   EXPECT_NEAR(total.x, 0.5 * 1000 * 0.09 * cd * 0.04, 1e-12);
   EXPECT_NEAR(std::abs(total.y) + std::abs(total.z), 0.0, 1e-15);
 }

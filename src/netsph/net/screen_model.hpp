@@ -78,10 +78,4 @@ NETSPH_HD ScreenForceCoefficients screen_coefficients_at_cos(ScreenCoefficients 
   return k;
 }
 
-/// The same at the angle theta in [0, pi/2].
-NETSPH_HD ScreenForceCoefficients screen_coefficients(ScreenCoefficients set, double solidity,
-                                                      double theta, double reynolds) {
-  return screen_coefficients_at_cos(set, solidity, std::cos(theta), reynolds);
-}
-
 }  // namespace netsph
