@@ -195,6 +195,35 @@ TEST(Distributed, CoupledNetWithInletAndOutletOnTwoProcessesMatchesOne) {
   test::expect_parity(compare_split(test::load_case("net_tethered_knot.toml"), 2, 40));
 }
 
+TEST(Distributed, AnErrorInOneProcesssPartOfTheSceneStopsEveryProcess) {
+  // The domain ends where the tank's right wall begins: its particles lie outside it. Only
+  // the process whose part of the scene holds that wall finds them; every process must stop
+  // with its message instead of waiting for the others.
+  const CaseSpec spec =
+      test::load_case("dambreak2d.toml", {"simulation.dp=0.04", "domain.max=[4.0, 0.0, 8.0]"});
+  EXPECT_THROW(Simulation{spec}, Error);
+  std::vector<std::string> errors(3);
+  ThreadTeam team(3);
+  std::vector<std::thread> threads;
+  for (int r = 0; r < 3; ++r) {
+    threads.emplace_back([&, r] {
+      omp_set_num_threads(1);
+      try {
+        ThreadCollectives coll(team, r);
+        DistributedSimulation sim(spec, coll);
+      } catch (const Error& e) {
+        errors[r] = e.what();
+      }
+    });
+  }
+  for (auto& t : threads) t.join();
+  for (int r = 0; r < 3; ++r) {
+    EXPECT_NE(errors[r].find("lies outside [domain]"), std::string::npos)
+        << "process " << r << ": " << errors[r];
+    EXPECT_EQ(errors[r], errors[0]);
+  }
+}
+
 TEST(Distributed, CutsFallOnTheBinBoundariesNearestEqualShares) {
   // Ten bins of 0.1 m from 1.0 m, the last partial (the domain ends at 1.95 m).
   WorkHistogram h(1.0, 1.95, 0.1);

@@ -3,16 +3,55 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <optional>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "netsph/distributed/scene_parts.hpp"
+
 namespace netsph {
 namespace {
 
-std::unique_ptr<Simulation> whole_scene(const CaseSpec& spec, const CheckpointData* resume) {
-  auto sim = std::make_unique<Simulation>(spec, StepBackend::Cpu);
-  if (resume) sim->restore_state(*resume);
+/// Collective: rethrows on every process the error of the first that failed, if any did.
+void rethrow_if_any_failed(Collectives& coll, const Error* error) {
+  const int first = coll.min(error ? coll.rank() : coll.size());
+  if (first == coll.size()) return;
+  std::string where = error ? error->where() : std::string(), text = error ? error->message() : "";
+  coll.broadcast(where, first);
+  coll.broadcast(text, first);
+  throw Error(where, text);
+}
+
+/// Collective: this process's part of the case (scene_parts.hpp), each particle on one
+/// process. A restored run reads the whole checkpoint on every process and keeps its part.
+std::unique_ptr<Simulation> own_part(const CaseSpec& spec, Collectives& coll,
+                                     const CheckpointData* resume) {
+  const AxisRange region = set_up_region(spec, coll.size(), coll.rank());
+  std::unique_ptr<Simulation> sim;
+  // Errors before the bounds' reduction come from the case alone (alike on every process);
+  // those after it may come from one process's particles.
+  std::optional<Error> error;
+  try {
+    if (resume) {
+      sim = std::make_unique<Simulation>(spec, StepBackend::Cpu);
+      sim->restore_state(*resume);
+      ParticleSet& p = sim->particles();
+      std::vector<char> keep(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) keep[i] = region.contains(p.pos[i]);
+      p.keep_only(keep);
+    } else {
+      const WholeBounds whole = [&coll](Vec3d& lo, Vec3d& hi) {
+        for (int a = 0; a < 3; ++a) lo[a] = -coll.max(-lo[a]), hi[a] = coll.max(hi[a]);
+      };
+      sim = std::make_unique<Simulation>(spec, StepBackend::Cpu, [&](const CaseSpec& s) {
+        return build_scene_part(s, region, whole);
+      });
+    }
+  } catch (const Error& e) {
+    error = e;
+  }
+  rethrow_if_any_failed(coll, error ? &*error : nullptr);
   return sim;
 }
 
@@ -22,10 +61,10 @@ std::vector<ZoneGeometry> zone_geometries(const Simulation& sim) {
   return zones;
 }
 
-SlabPartition make_slabs(const Simulation& sim, int ranks, const GhostReach& ghosts,
+SlabPartition make_slabs(const Simulation& sim, Collectives& coll, const GhostReach& ghosts,
                          const std::vector<ZoneGeometry>& zones) {
   SlabPartition s = balanced_slabs(sim.particles(), sim.grid(), sim.scene().domain_min,
-                                   sim.scene().domain_max, ranks);
+                                   sim.scene().domain_max, coll);
   s.halo = halo_width(s, ghosts, sim.grid(), sim.model().support, zones);
   return s;
 }
@@ -42,22 +81,26 @@ DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& 
                                              const CheckpointData* resume,
                                              RebalancePolicy rebalance)
     : coll_(coll),
-      local_(whole_scene(spec, resume)),
+      local_(own_part(spec, coll, resume)),
       zones_(zone_geometries(*local_)),
-      ghost_reach_(ghost_reach(local_->particles(), zones_)),
-      slabs_(make_slabs(*local_, coll.size(), ghost_reach_, zones_)),
+      ghost_reach_(ghost_reach(local_->particles(), zones_, coll)),
+      slabs_(make_slabs(*local_, coll, ghost_reach_, zones_)),
       exchange_(slabs_, coll),
       rebalance_(rebalance) {
   Simulation& sim = *local_;
-  initial_fluid_ = sim.initial_fluid();
+  // A restored run's Simulation counted the whole scene's fluid; a built part only its own.
+  initial_fluid_ = resume ? sim.initial_fluid() : coll_.sum(std::uint64_t{sim.initial_fluid()});
   // A restored run's counts so far are the whole run's: every process starts from them and
   // adds only its own events.
   lost_total_ = sim.diagnostics().lost_total;
   open_base_ = sim.diagnostics().open;
-  count_base_ = sim.particles().size() + open_base_.removed + lost_total_ - open_base_.created;
+  count_base_ = coll_.sum(std::uint64_t{sim.particles().size()}) + open_base_.removed +
+                lost_total_ - open_base_.created;
   diag_ = sim.diagnostics();
   sim.set_partition(this);
-  exchange_.distribute(sim.particles());
+  // The parts go to the owners of the balanced slabs, and the halo is sent.
+  exchange_.own_all(sim.particles());
+  check_lost(exchange_.exchange(sim.particles(), sim.grid()));
   std::vector<double> held = {static_cast<double>(sim.particles().size()),
                               static_cast<double>(exchange_.owned_count())};
   coll_.sum(held);

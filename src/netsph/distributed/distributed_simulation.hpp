@@ -1,7 +1,7 @@
 #pragma once
 // A Simulation split over processes (MPI ranks, or threads in the tests) by slabs along the
-// domain's longest axis (slab_partition.hpp). Every process builds the whole scene, keeps its
-// own particles and a halo, and steps them with the CPU backend; dt, the bodies' loads and the
+// axis the particles spread furthest (slab_partition.hpp). Every process keeps its own
+// particles and a halo, and steps them with the CPU backend; dt, the bodies' loads and the
 // largest speed are reduced over the processes inside the step (solver/step_partition.hpp),
 // and particles move between processes after it (particle_exchange.hpp). Bodies and nets are
 // advanced by every process alike from the summed loads. The outputs read a whole Simulation
@@ -12,9 +12,10 @@
 // and when the busiest is above the mean by the threshold, the cuts are chosen anew from the
 // summed histograms of their particles and the particles that changed slab move at once.
 //
-// Not yet distributed: the device backends. Each process builds the whole scene (or restores
-// a whole checkpoint) before keeping its part, so the set-up needs the memory of the whole
-// case on every process.
+// Each process builds only its part of the scene (scene_parts.hpp, build_scene_part), so no
+// process but the outputs' (DistributedStepper) needs the memory of the whole case; a restored
+// run still reads the whole checkpoint on every process. Not yet distributed: the device
+// backends.
 #include <memory>
 
 #include "netsph/distributed/collectives.hpp"
@@ -91,7 +92,8 @@ class DistributedSimulation final : public StepPartition {
 
   Collectives& coll_;
   std::unique_ptr<Simulation> local_;
-  // What the halo width depends on besides the cuts, from the whole scene at the start.
+  // What the halo width depends on besides the cuts, from every process's particles at the
+  // start.
   std::vector<ZoneGeometry> zones_;
   GhostReach ghost_reach_;
   SlabPartition slabs_;            // after the two above, which its halo width needs

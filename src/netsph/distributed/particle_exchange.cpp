@@ -74,18 +74,10 @@ Bytes ParticleExchange::pack_owned(const ParticleSet& p) const {
   return out;
 }
 
-void ParticleExchange::distribute(ParticleSet& p) {
-  const int me = coll_.rank();
+void ParticleExchange::own_all(const ParticleSet& p) {
   owned_.assign(p.next_id / 64 + 1, 0);
   owned_count_ = 0;
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool mine = slabs_.owner_of(p.pos[i]) == me;
-    if (!mine && !(slabs_.distance_to(me, p.pos[i]) < slabs_.halo)) continue;
-    if (mine) set_owned(p.id[i], true);
-    move_slot(p, w++, i);
-  }
-  truncate(p, w);
+  for (const std::uint32_t id : p.id) set_owned(id, true);
 }
 
 ExchangeReport ParticleExchange::exchange(ParticleSet& p, const CellGrid& grid) {

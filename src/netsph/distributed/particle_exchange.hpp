@@ -27,9 +27,10 @@ class ParticleExchange {
  public:
   ParticleExchange(const SlabPartition& slabs, Collectives& coll);
 
-  /// From the whole scene, which every process builds alike: keeps this process's own
-  /// particles and its halo, without communication.
-  void distribute(ParticleSet& p);
+  /// At the start: every particle in `p` is this process's own (its part of the scene, each
+  /// particle held by one process); the next exchange sends those of other slabs to their
+  /// owners and the halo.
+  void own_all(const ParticleSet& p);
   /// After a step (collective), or after the slabs were cut again. `grid` is the domain's
   /// (the simulation's).
   ExchangeReport exchange(ParticleSet& p, const CellGrid& grid);

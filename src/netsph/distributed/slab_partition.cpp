@@ -50,14 +50,17 @@ std::vector<int> SlabPartition::halo_neighbours(int r) const {
   return out;
 }
 
-GhostReach ghost_reach(const ParticleSet& particles, const std::vector<ZoneGeometry>& zones) {
+GhostReach ghost_reach(const ParticleSet& own, const std::vector<ZoneGeometry>& zones,
+                       Collectives& coll) {
   GhostReach g;
   g.ghost_nodes = !zones.empty();  // buffers take their state at ghost nodes
-  for (const Vec3f& v : particles.ghost) {
+  for (const Vec3f& v : own.ghost) {
     for (int a = 0; a < 3; ++a)
       g.along[a] = std::max(g.along[a], static_cast<double>(std::fabs(v[a])));
     g.ghost_nodes |= v.x != 0 || v.y != 0 || v.z != 0;
   }
+  for (int a = 0; a < 3; ++a) g.along[a] = coll.max(g.along[a]);
+  g.ghost_nodes = coll.max(g.ghost_nodes ? 1.0 : 0.0) > 0;
   return g;
 }
 
@@ -119,17 +122,20 @@ std::vector<double> equal_work_cuts(const WorkHistogram& work, double hi, int ra
   return cuts;
 }
 
-SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
-                             const Vec3d& domain_min, const Vec3d& domain_max, int ranks) {
+SlabPartition balanced_slabs(const ParticleSet& own, const CellGrid& grid, const Vec3d& domain_min,
+                             const Vec3d& domain_max, Collectives& coll) {
+  const int ranks = coll.size();
   SlabPartition s;
   // The axis along which the particles spread furthest (not the domain: a dam break's domain
   // is tall for the splash, its water wide).
   Vec3d lo_p = domain_max, hi_p = domain_min;
-  for (const Vec3d& p : particles.pos) {
+  for (const Vec3d& p : own.pos) {
     lo_p = {std::min(lo_p.x, p.x), std::min(lo_p.y, p.y), std::min(lo_p.z, p.z)};
     hi_p = {std::max(hi_p.x, p.x), std::max(hi_p.y, p.y), std::max(hi_p.z, p.z)};
   }
-  const Vec3d extent = particles.size() > 0 ? hi_p - lo_p : domain_max - domain_min;
+  for (int a = 0; a < 3; ++a) lo_p[a] = -coll.max(-lo_p[a]), hi_p[a] = coll.max(hi_p[a]);
+  const bool any = coll.sum(static_cast<std::uint64_t>(own.size())) > 0;
+  const Vec3d extent = any ? hi_p - lo_p : domain_max - domain_min;
   for (int a = 1; a < 3; ++a)
     if (extent[a] > extent[s.axis]) s.axis = a;
   s.periodic = grid.periodic(s.axis);
@@ -148,8 +154,9 @@ SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
   s.cuts.assign(ranks + 1, lo);
   s.cuts.back() = hi;  // the bounds coordinate() wraps into
   WorkHistogram work(lo, hi, cell);
-  for (std::size_t i = 0; i < particles.size(); ++i)
-    work.add(std::clamp(s.coordinate(particles.pos[i]), lo, hi), particles.kind[i]);
+  for (std::size_t i = 0; i < own.size(); ++i)
+    work.add(std::clamp(s.coordinate(own.pos[i]), lo, hi), own.kind[i]);
+  coll.sum(work.bins);
   s.cuts = equal_work_cuts(work, hi, ranks);
   return s;
 }

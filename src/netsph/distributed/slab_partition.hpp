@@ -18,6 +18,7 @@
 
 #include "netsph/boundary/open_boundary.hpp"
 #include "netsph/core/vec3.hpp"
+#include "netsph/distributed/collectives.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
 #include "netsph/sph/particle_set.hpp"
 
@@ -70,21 +71,24 @@ struct WorkHistogram {
 /// one bin wide. Throws netsph::Error when there are fewer bins than ranks.
 std::vector<double> equal_work_cuts(const WorkHistogram& work, double hi, int ranks);
 
-/// Slabs along the axis the particles spread furthest with equal shares of the work (fluid
-/// particles 1, solid ones kSolidWork); `halo` is left for halo_width. Throws netsph::Error naming
-/// the limit when the axis cannot hold `ranks` slabs at least one cell wide.
-SlabPartition balanced_slabs(const ParticleSet& particles, const CellGrid& grid,
-                             const Vec3d& domain_min, const Vec3d& domain_max, int ranks);
+/// Collective: slabs along the axis the particles spread furthest with equal shares of the
+/// work (fluid particles 1, solid ones kSolidWork), one per process of `coll`; `own` is this
+/// process's share of the particles, no particle held by two processes. `halo` is left for
+/// halo_width. Throws netsph::Error (on every process alike) naming the limit when the axis
+/// cannot hold the slabs at least one cell wide.
+SlabPartition balanced_slabs(const ParticleSet& own, const CellGrid& grid, const Vec3d& domain_min,
+                             const Vec3d& domain_max, Collectives& coll);
 
 /// What of the particles the halo width depends on (halo_width): the largest component along
 /// each axis of their mDBC ghost offsets, and whether anything is interpolated at ghost nodes.
-/// Taken from the whole scene at the start, so that every process uses the same halo when the
-/// slabs are cut again.
+/// Taken from every process's particles at the start (collective), so that every process uses
+/// the same halo when the slabs are cut again.
 struct GhostReach {
   Vec3d along{};  ///< m, per axis
   bool ghost_nodes = false;
 };
-GhostReach ghost_reach(const ParticleSet& particles, const std::vector<ZoneGeometry>& zones);
+GhostReach ghost_reach(const ParticleSet& own, const std::vector<ZoneGeometry>& zones,
+                       Collectives& coll);
 
 /// The busiest process's share of the work over the mean (1: balanced).
 double work_imbalance(std::span<const double> shares);

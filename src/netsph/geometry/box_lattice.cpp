@@ -1,5 +1,6 @@
 #include "netsph/geometry/box_lattice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -48,6 +49,35 @@ std::vector<Vec3d> fill_box(const LatticeBox& box, double dp) {
       for (int i = 0; i < n[0]; ++i)
         pts.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
   return pts;
+}
+
+LatticePart fill_box_part(const LatticeBox& box, double dp, const AxisRange& range) {
+  const auto n = lattice_counts(box, dp);
+  LatticePart part;
+  part.total = static_cast<std::uint64_t>(n[0]) * n[1] * n[2];
+  // The index range along the range's axis, from the coordinates themselves (the same
+  // expression fill_box uses, so no point is kept or dropped by round-off differently).
+  std::array<int, 3> lo{0, 0, 0}, hi = n;
+  const int a = range.axis;
+  while (lo[a] < n[a] && !(coord(box, a, lo[a], dp) >= range.lo)) ++lo[a];
+  hi[a] = lo[a];
+  while (hi[a] < n[a] && coord(box, a, hi[a], dp) < range.hi) ++hi[a];
+  if (box.dims == 2 && a == 1) lo[a] = 0, hi[a] = range.contains(Vec3d{}) ? 1 : 0;
+  const std::size_t kept = static_cast<std::size_t>(std::max(0, hi[0] - lo[0])) *
+                           std::max(0, hi[1] - lo[1]) * std::max(0, hi[2] - lo[2]);
+  part.points.reserve(kept);
+  part.index.reserve(kept);
+  for (int k = lo[2]; k < hi[2]; ++k)
+    for (int j = lo[1]; j < hi[1]; ++j)
+      for (int i = lo[0]; i < hi[0]; ++i) {
+        part.points.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
+        part.index.push_back(
+            static_cast<std::uint64_t>(i) +
+            static_cast<std::uint64_t>(n[0]) *
+                (static_cast<std::uint64_t>(j) +
+                 static_cast<std::uint64_t>(n[1]) * static_cast<std::uint64_t>(k)));
+      }
+  return part;
 }
 
 std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp,

@@ -5,6 +5,8 @@
 // dp from the fluid on every face (the wall surface is the box face, midway between the last
 // fluid particle and the first wall particle, as mDBC expects).
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "netsph/core/vec3.hpp"
@@ -22,8 +24,31 @@ std::array<int, 3> lattice_counts(const LatticeBox& box, double dp);
 /// Box extent actually covered by the lattice: min + counts * dp.
 Vec3d lattice_max(const LatticeBox& box, double dp);
 
-/// The fluid lattice points inside the box.
+/// The fluid lattice points inside the box, x fastest, then y, then z.
 std::vector<Vec3d> fill_box(const LatticeBox& box, double dp);
+
+/// Coordinates in [lo, hi) along one axis (either end may be infinite).
+struct AxisRange {
+  int axis = 0;
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+
+  bool contains(const Vec3d& p) const { return p[axis] >= lo && p[axis] < hi; }
+  bool everything() const {
+    return lo == -std::numeric_limits<double>::infinity() &&
+           hi == std::numeric_limits<double>::infinity();
+  }
+};
+
+/// The fill lattice points within `range`, each with its index in fill_box's order, without
+/// generating the others (one process of a distributed run builds its part of a fill that
+/// may hold 1e8 points).
+struct LatticePart {
+  std::vector<Vec3d> points;
+  std::vector<std::uint64_t> index;  ///< in fill_box(box, dp)
+  std::uint64_t total = 0;           ///< points in the whole box
+};
+LatticePart fill_box_part(const LatticeBox& box, double dp, const AxisRange& range);
 
 /// Wall particle positions: lattice points outside the box, up to `layers` spacings beyond
 /// each chosen face (order xmin, xmax, ymin, ymax, zmin, zmax); edges and corners between two

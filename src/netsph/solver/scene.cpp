@@ -157,6 +157,11 @@ FluidModel fluid_model_for(const CaseSpec& spec, double sound_speed) {
 }
 
 Scene build_scene(const CaseSpec& spec) {
+  return build_scene_part(spec, AxisRange{}, {});
+}
+
+Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
+                       const WholeBounds& whole_bounds) {
   Scene scene;
   const int dims = spec.simulation.dimensions;
   const double dp = spec.simulation.dp;
@@ -194,6 +199,12 @@ Scene build_scene(const CaseSpec& spec) {
   for (const auto& o : spec.outlets) scene.zones.push_back(make_zone(o, false, spec, top_surface));
 
   ParticleSet& p = scene.particles;
+  // The particles near the region too: whether a fluid particle overlaps an earlier one
+  // (remove_overlaps) depends on particles within dp/2, whose own fate depends on earlier
+  // sources within dp/2 of them, a chain at most as long as the fills are many (walls and
+  // bodies are never removed; one fill's lattice never overlaps itself).
+  const double margin = static_cast<double>(spec.fills.size() + 1) * dp;
+  const AxisRange near{region.axis, region.lo - margin, region.hi + margin};
   for (std::size_t wi = 0; wi < spec.walls.size(); ++wi) {
     const auto& w = spec.walls[wi];
     const LatticeBox box = lattice_box(w.box, dims);
@@ -203,8 +214,13 @@ Scene build_scene(const CaseSpec& spec) {
       ghosts = box_wall_ghost_offsets(pts, box.min, lattice_max(box, dp), dims);
     }
     const Vec3f v0(w.motion.at(0.0));
-    p.reserve_more(pts.size());
+    p.reserve_more(static_cast<std::size_t>(
+        std::count_if(pts.begin(), pts.end(), [&](const Vec3d& x) { return near.contains(x); })));
     for (std::size_t k = 0; k < pts.size(); ++k) {
+      if (!near.contains(pts[k])) {
+        ++p.next_id;  // another process's: the id stays the whole scene's
+        continue;
+      }
       // Walls start hydrostatic with the highest free surface so that DBC does not need a
       // transient to build the pressure that holds the fluid up.
       p.add(pts[k], v0, hydrostatic_density(eos, gz, top_surface, pts[k].z), ParticleKind::Wall,
@@ -216,10 +232,13 @@ Scene build_scene(const CaseSpec& spec) {
   std::vector<std::size_t> buffer_count(scene.zones.size(), 0);
   for (std::size_t i = 0; i < spec.fills.size(); ++i) {
     const auto& f = spec.fills[i];
-    const auto pts = fill_box(lattice_box(f.box, dims), dp);
+    const LatticePart part = fill_box_part(lattice_box(f.box, dims), dp, near);
     const double surface = surface_of(f, dp, dims);
-    p.reserve_more(pts.size());
-    for (const auto& x : pts) {
+    const std::uint32_t first_id = p.next_id;
+    p.reserve_more(part.points.size());
+    for (std::size_t k = 0; k < part.points.size(); ++k) {
+      const Vec3d& x = part.points[k];
+      p.next_id = first_id + static_cast<std::uint32_t>(part.index[k]);
       const Real rho = hydrostatic_density(eos, gz, surface, x.z);
       const int z = zone_containing(scene.zones, x);
       if (z < 0) {
@@ -232,7 +251,8 @@ Scene build_scene(const CaseSpec& spec) {
         ++buffer_count[static_cast<std::size_t>(z)];
       }
     }
-    scene.sources.push_back({fmt::format("fill{}", i + 1), pts.size()});
+    p.next_id = first_id + static_cast<std::uint32_t>(part.total);
+    scene.sources.push_back({fmt::format("fill{}", i + 1), part.total});
   }
   for (std::size_t z = 0; z < scene.zones.size(); ++z) {
     if (buffer_count[z] == 0) {
@@ -242,14 +262,19 @@ Scene build_scene(const CaseSpec& spec) {
     }
     scene.sources.push_back({scene.zones[z].name + " (buffer)", buffer_count[z]});
   }
-  if (p.size() == 0) throw Error(spec.source, "the case creates no particles");
   scene.removed_in_bodies = remove_fluid_in_bodies(spec, scene);
   wrap_body_particles(spec, p);
 
-  // Bounding box of the particles, for the default domain and the overlap search.
-  Vec3d lo = p.pos[0], hi = p.pos[0];
+  // Bounding box of the particles, for the default domain and the overlap search (of the
+  // part near the region; the particles past it are the whole scene's too, so the
+  // processes' boxes make up the whole scene's).
+  const double inf = std::numeric_limits<double>::infinity();
+  Vec3d lo{inf, inf, inf}, hi{-inf, -inf, -inf};
   for (const auto& x : p.pos)
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
+  Vec3d whole_lo = lo, whole_hi = hi;
+  if (whole_bounds) whole_bounds(whole_lo, whole_hi);
+  if (!(whole_lo.x <= whole_hi.x)) throw Error(spec.source, "the case creates no particles");
 
   const double h = spec.simulation.h_over_dp * dp;
   if (spec.domain.given) {
@@ -270,14 +295,21 @@ Scene build_scene(const CaseSpec& spec) {
   } else {
     // Default: the particles' bounding box plus 2h around it, and as much again above it so
     // that splashes are not cut off.
-    scene.domain_min = lo - Vec3d(2 * h, 2 * h, 2 * h);
-    scene.domain_max = hi + Vec3d(2 * h, 2 * h, 2 * h);
-    scene.domain_max.z += hi.z - lo.z;
+    scene.domain_min = whole_lo - Vec3d(2 * h, 2 * h, 2 * h);
+    scene.domain_max = whole_hi + Vec3d(2 * h, 2 * h, 2 * h);
+    scene.domain_max.z += whole_hi.z - whole_lo.z;
     if (dims == 2) scene.domain_min.y = scene.domain_max.y = 0;
   }
 
-  Vec3d glo = lo - Vec3d(dp, dp, dp), ghi = hi + Vec3d(dp, dp, dp);
-  scene.removed_overlaps = remove_overlaps(p, dp, glo, ghi, dims);
+  if (p.size() > 0) {
+    const Vec3d glo = lo - Vec3d(dp, dp, dp), ghi = hi + Vec3d(dp, dp, dp);
+    scene.removed_overlaps = remove_overlaps(p, dp, glo, ghi, dims);
+  }
+  if (!region.everything()) {
+    std::vector<char> keep(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) keep[i] = region.contains(p.pos[i]);
+    p.keep_only(keep);
+  }
   p.shrink_to_fit();
   if (scene.removed_overlaps > 0) {
     scene.warnings.push_back(fmt::format(

@@ -1,12 +1,14 @@
 #pragma once
 // Scene: the initial particles of a case and the quantities derived from the case as a whole
 // (sound speed, domain, fluid model). Built once from a validated CaseSpec.
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "netsph/bodies/rigid_body.hpp"
 #include "netsph/boundary/open_boundary.hpp"
 #include "netsph/case/case_spec.hpp"
+#include "netsph/geometry/box_lattice.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/particle_set.hpp"
 
@@ -35,6 +37,21 @@ struct Scene {
 /// Builds the particles (walls first, then fills in file order) with hydrostatic density.
 /// Throws netsph::Error naming the case item when something cannot be built.
 Scene build_scene(const CaseSpec& spec);
+
+/// Turns the bounding box of one process's particles into that of every process's (a
+/// reduction in a distributed run): the default domain is derived from it.
+using WholeBounds = std::function<void(Vec3d& lo, Vec3d& hi)>;
+
+/// One process's part of the scene of a distributed run, so that no process needs the memory
+/// of the whole case: the particles whose coordinate along region.axis lies in the region,
+/// with the ids, positions, densities and kinds build_scene gives them, and the whole
+/// scene's domain (through `whole_bounds`, called once on every process). The parts of
+/// regions that tile the axis make up build_scene's particles exactly. The fills are
+/// generated only near the region; the walls' and bodies' particles (a surface, not a volume)
+/// in full and then trimmed. `sources` count the whole case's particles as generated; the
+/// removal counts and warnings are those of the part and the margin it is built with.
+Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
+                       const WholeBounds& whole_bounds);
 
 /// Adds the [[body]] particles (solver/scene_bodies.cpp) and fills in scene.bodies.
 void add_bodies(const CaseSpec& spec, Scene& scene);

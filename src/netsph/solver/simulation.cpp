@@ -13,9 +13,13 @@
 namespace netsph {
 
 Simulation::Simulation(const CaseSpec& spec, StepBackend backend)
+    : Simulation(spec, backend, [](const CaseSpec& s) { return build_scene(s); }) {}
+
+Simulation::Simulation(const CaseSpec& spec, StepBackend backend,
+                       const std::function<Scene(const CaseSpec&)>& build)
     : spec_(spec_with_net_knots(spec)),
       nets_(coupled_nets(spec_)),
-      scene_(build_scene(spec_)),
+      scene_(build(spec_)),
       p_(scene_.particles),
       backend_(backend) {
   const FluidModel& m = scene_.model;

@@ -14,6 +14,7 @@
 // run() adds the outputs (snapshots, series.csv, summary.json) and the progress display.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -79,6 +80,10 @@ class Simulation {
   /// Throws netsph::Error for StepBackend::Cuda when netsph was built without CUDA or finds no
   /// usable device.
   explicit Simulation(const CaseSpec& spec, StepBackend backend = StepBackend::Cpu);
+  /// With the particles `build` makes of the case (with its nets' knots as bodies): one
+  /// process's part of the scene in a distributed run (build_scene_part).
+  Simulation(const CaseSpec& spec, StepBackend backend,
+             const std::function<Scene(const CaseSpec&)>& build);
   ~Simulation();
 
   /// Advances one symplectic step. Throws SimulationUnstable.
