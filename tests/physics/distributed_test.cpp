@@ -35,7 +35,8 @@ struct SplitRun {
   double imbalance() const { return work_imbalance(work); }
 };
 
-SplitRun run_split(const CaseSpec& spec, int processes, int steps, RebalancePolicy policy = {}) {
+SplitRun run_split(const CaseSpec& spec, int processes, int steps, RebalancePolicy policy = {},
+                   const CheckpointData* resume = nullptr) {
   SplitRun run;
   run.whole = std::make_unique<Simulation>(spec);
   run.owned.resize(processes);
@@ -48,7 +49,7 @@ SplitRun run_split(const CaseSpec& spec, int processes, int steps, RebalancePoli
       omp_set_num_threads(1);
       try {
         ThreadCollectives coll(team, r);
-        DistributedSimulation sim(spec, coll, nullptr, policy);
+        DistributedSimulation sim(spec, coll, resume, policy);
         for (int s = 0; s < steps; ++s) {
           sim.step();
           if (r == 0) run.dts.push_back(sim.local().last_dt());
@@ -193,6 +194,24 @@ TEST(Distributed, OpenChannelOnTwoProcessesMatchesOne) {
 // The same with the knot, its twine and the inlet and outlet of the case as written.
 TEST(Distributed, CoupledNetWithInletAndOutletOnTwoProcessesMatchesOne) {
   test::expect_parity(compare_split(test::load_case("net_tethered_knot.toml"), 2, 40));
+}
+
+TEST(Distributed, ACheckpointOfOneProcessContinuedOnThreeMatchesOne) {
+  // Each process restores only the checkpoint's particles in its part of the scene.
+  const CaseSpec spec = test::load_case("floating_box2d.toml", {"simulation.dp=0.04"});
+  Simulation one(spec);
+  for (int s = 0; s < 30; ++s) one.step();
+  CheckpointData saved;
+  one.save_state(saved);
+  const std::uint32_t created_ids = one.particles().next_id;
+  for (int s = 0; s < 30; ++s) one.step();
+  const SplitRun split = run_split(spec, 3, 30, {}, &saved);
+  for (const std::string& e : split.errors) EXPECT_EQ(e, "");
+  std::size_t owned = 0;
+  for (const std::size_t n : split.owned) owned += n;
+  EXPECT_EQ(owned, one.particles().size()) << "particles doubled or lost between processes";
+  EXPECT_EQ(split.whole->steps(), 60);
+  test::expect_parity(test::state_difference(one, *split.whole, created_ids));
 }
 
 TEST(Distributed, AnErrorInOneProcesssPartOfTheSceneStopsEveryProcess) {

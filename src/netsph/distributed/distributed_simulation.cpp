@@ -24,7 +24,8 @@ void rethrow_if_any_failed(Collectives& coll, const Error* error) {
 }
 
 /// Collective: this process's part of the case (scene_parts.hpp), each particle on one
-/// process. A restored run reads the whole checkpoint on every process and keeps its part.
+/// process. A restored run keeps the checkpoint's particles in its region (the caller read
+/// the whole checkpoint).
 std::unique_ptr<Simulation> own_part(const CaseSpec& spec, Collectives& coll,
                                      const CheckpointData* resume) {
   const AxisRange region = set_up_region(spec, coll.size(), coll.rank());
@@ -33,21 +34,13 @@ std::unique_ptr<Simulation> own_part(const CaseSpec& spec, Collectives& coll,
   // those after it may come from one process's particles.
   std::optional<Error> error;
   try {
-    if (resume) {
-      sim = std::make_unique<Simulation>(spec, StepBackend::Cpu);
-      sim->restore_state(*resume);
-      ParticleSet& p = sim->particles();
-      std::vector<char> keep(p.size());
-      for (std::size_t i = 0; i < p.size(); ++i) keep[i] = region.contains(p.pos[i]);
-      p.keep_only(keep);
-    } else {
-      const WholeBounds whole = [&coll](Vec3d& lo, Vec3d& hi) {
-        for (int a = 0; a < 3; ++a) lo[a] = -coll.max(-lo[a]), hi[a] = coll.max(hi[a]);
-      };
-      sim = std::make_unique<Simulation>(spec, StepBackend::Cpu, [&](const CaseSpec& s) {
-        return build_scene_part(s, region, whole);
-      });
-    }
+    const WholeBounds whole = [&coll](Vec3d& lo, Vec3d& hi) {
+      for (int a = 0; a < 3; ++a) lo[a] = -coll.max(-lo[a]), hi[a] = coll.max(hi[a]);
+    };
+    sim = std::make_unique<Simulation>(spec, StepBackend::Cpu, [&](const CaseSpec& s) {
+      return build_scene_part(s, region, whole);
+    });
+    if (resume) sim->restore_state(*resume, region);
   } catch (const Error& e) {
     error = e;
   }
@@ -88,8 +81,8 @@ DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& 
       exchange_(slabs_, coll),
       rebalance_(rebalance) {
   Simulation& sim = *local_;
-  // A restored run's Simulation counted the whole scene's fluid; a built part only its own.
-  initial_fluid_ = resume ? sim.initial_fluid() : coll_.sum(std::uint64_t{sim.initial_fluid()});
+  // Each part counted its own fluid at the start (a restored run's too, before the restore).
+  initial_fluid_ = coll_.sum(std::uint64_t{sim.initial_fluid()});
   // A restored run's counts so far are the whole run's: every process starts from them and
   // adds only its own events.
   lost_total_ = sim.diagnostics().lost_total;

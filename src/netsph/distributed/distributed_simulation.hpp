@@ -14,8 +14,8 @@
 //
 // Each process builds only its part of the scene (scene_parts.hpp, build_scene_part), so no
 // process but the outputs' (DistributedStepper) needs the memory of the whole case; a restored
-// run still reads the whole checkpoint on every process. Not yet distributed: the device
-// backends.
+// run keeps the checkpoint's particles in its part, though every process reads the whole
+// file. Not yet distributed: the device backends.
 #include <memory>
 
 #include "netsph/distributed/collectives.hpp"

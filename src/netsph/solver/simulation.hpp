@@ -156,8 +156,9 @@ class Simulation {
   /// Adds the state a restart needs to `c` (solver/simulation_checkpoint.cpp).
   void save_state(CheckpointData& c) const;
   /// Replaces the state with a checkpoint's, written by save_state for the same case; the
-  /// steps that follow are then bit for bit those the saved run would have taken.
-  void restore_state(const CheckpointData& c);
+  /// steps that follow are then bit for bit those the saved run would have taken. `keep`:
+  /// only the particles there (one process's region of a distributed run).
+  void restore_state(const CheckpointData& c, const AxisRange& keep = {});
 
  private:
   // The device backends (simulation_device.cpp): the step runs in device_, bodies and nets stay

@@ -64,7 +64,7 @@ void Simulation::save_state(CheckpointData& c) const {
     for (const NetKnot& k : net.model.knots) put3(knots, k.position), put3(knots, k.velocity);
 }
 
-void Simulation::restore_state(const CheckpointData& c) {
+void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
   const auto fail = [&](const std::string& what) {
     throw Error(c.source, what + ": the checkpoint was written for another case");
   };
@@ -90,16 +90,27 @@ void Simulation::restore_state(const CheckpointData& c) {
   for (const CoupledNet& net : nets_) knot_count += net.model.knots.size();
   if (knots.size() != 6 * knot_count) fail("the nets' knots differ");
 
-  p_.pos.resize(n), p_.vel.resize(n), p_.ghost.resize(n), p_.rho.assign(rho.begin(), rho.end());
-  p_.kind.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    p_.pos[i] = {pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]};
-    p_.vel[i] = {vel[3 * i], vel[3 * i + 1], vel[3 * i + 2]};
-    p_.ghost[i] = {ghost[3 * i], ghost[3 * i + 1], ghost[3 * i + 2]};
-    p_.kind[i] = static_cast<ParticleKind>(kind[i]);
+  const auto position = [&](std::size_t i) {
+    return Vec3d{pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]};
+  };
+  std::size_t kept = n;
+  if (!keep.everything()) {
+    kept = 0;
+    for (std::size_t i = 0; i < n; ++i) kept += keep.contains(position(i));
   }
-  p_.id = id;
-  p_.group = group;
+  p_ = ParticleSet{};
+  p_.reserve_more(kept);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3d x = position(i);
+    if (!keep.everything() && !keep.contains(x)) continue;
+    p_.pos.push_back(x);
+    p_.vel.push_back({vel[3 * i], vel[3 * i + 1], vel[3 * i + 2]});
+    p_.ghost.push_back({ghost[3 * i], ghost[3 * i + 1], ghost[3 * i + 2]});
+    p_.rho.push_back(rho[i]);
+    p_.kind.push_back(static_cast<ParticleKind>(kind[i]));
+    p_.id.push_back(id[i]);
+    p_.group.push_back(group[i]);
+  }
   p_.next_id = c.u32.at("particles.next_id").at(0);
 
   time_ = c.real("sim.time");
