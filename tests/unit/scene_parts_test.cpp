@@ -37,6 +37,34 @@ TEST(SceneParts, APartOfAFillIsTheWholeFillsPointsInTheRangeWithTheirIndexes) {
   }
 }
 
+TEST(SceneParts, APartOfAWallIsTheWholeWallsPointsInTheRangeWithTheirIndexes) {
+  const double dp = 0.1;
+  for (const int dims : {2, 3}) {
+    const LatticeBox box{{0, 0, 0}, {1.0, 0.5, 0.7}, dims};
+    // A tank open at the top, and walls on every face.
+    for (const std::array<bool, 6> faces :
+         {std::array<bool, 6>{true, true, true, true, true, false},
+          std::array<bool, 6>{true, true, true, true, true, true}}) {
+      const std::vector<Vec3d> whole = wall_box_layers(box, dp, faces, 3);
+      for (const AxisRange range : {AxisRange{0, 0.35, 0.62}, AxisRange{2, -1.0, 0.3},
+                                    AxisRange{0, -0.15, -0.05}, AxisRange{2, 0.31, 0.32}}) {
+        const LatticePart part = wall_box_layers_part(box, dp, faces, 3, range);
+        EXPECT_EQ(part.total, whole.size());
+        std::vector<std::uint64_t> expected;
+        for (std::uint64_t i = 0; i < whole.size(); ++i)
+          if (range.contains(whole[i])) expected.push_back(i);
+        ASSERT_EQ(part.index, expected) << dims << "D, axis " << range.axis;
+        for (std::size_t k = 0; k < part.points.size(); ++k)
+          EXPECT_EQ(part.points[k], whole[part.index[k]]);
+      }
+    }
+  }
+  // The layers themselves, counted: a 10 x 7 box in 2D with three layers on all four sides.
+  const LatticeBox flat{{0, 0, 0}, {1.0, 0.0, 0.7}, 2};
+  EXPECT_EQ(wall_box_layers(flat, dp, {true, true, false, false, true, true}, 3).size(),
+            16u * 13u - 10u * 7u);
+}
+
 /// Builds the parts of `spec` between `cuts` along `axis` as the processes would (each sees the
 /// others' bounding boxes through the bounds callback) and checks they make up the whole.
 void expect_parts_make_up_the_whole(const CaseSpec& spec, int axis, std::vector<double> cuts) {

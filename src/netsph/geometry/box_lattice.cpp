@@ -41,14 +41,7 @@ double coord(const LatticeBox& box, int axis, int i, double dp) {
 }  // namespace
 
 std::vector<Vec3d> fill_box(const LatticeBox& box, double dp) {
-  const auto n = lattice_counts(box, dp);
-  std::vector<Vec3d> pts;
-  pts.reserve(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i)
-        pts.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
-  return pts;
+  return fill_box_part(box, dp, AxisRange{}).points;
 }
 
 LatticePart fill_box_part(const LatticeBox& box, double dp, const AxisRange& range) {
@@ -82,6 +75,11 @@ LatticePart fill_box_part(const LatticeBox& box, double dp, const AxisRange& ran
 
 std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp,
                                    const std::array<bool, 6>& faces, int layers) {
+  return wall_box_layers_part(box, dp, faces, layers, AxisRange{}).points;
+}
+
+LatticePart wall_box_layers_part(const LatticeBox& box, double dp, const std::array<bool, 6>& faces,
+                                 int layers, const AxisRange& range) {
   const auto n = lattice_counts(box, dp);
   // Index range per axis: extend by `layers` on a side only if that face carries a wall.
   std::array<int, 3> lo{}, hi{};
@@ -90,17 +88,26 @@ std::vector<Vec3d> wall_box_layers(const LatticeBox& box, double dp,
     lo[a] = (!flat && faces[2 * a]) ? -layers : 0;
     hi[a] = (!flat && faces[2 * a + 1]) ? n[a] + layers : n[a];
   }
-  std::vector<Vec3d> pts;
+  LatticePart part;
+  std::uint64_t index = 0;
   for (int k = lo[2]; k < hi[2]; ++k)
-    for (int j = lo[1]; j < hi[1]; ++j)
-      for (int i = lo[0]; i < hi[0]; ++i) {
-        const int idx[3] = {i, j, k};
-        bool outside = false;
-        for (int a = 0; a < 3; ++a) outside = outside || idx[a] < 0 || idx[a] >= n[a];
-        if (outside)
-          pts.push_back({coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)});
-      }
-  return pts;
+    for (int j = lo[1]; j < hi[1]; ++j) {
+      // The row's points outside the box: all of it where j or k is outside, else its ends
+      // (the interior rows of a 1e8-particle fill cost two segments, not a point each).
+      const bool whole_row = j < 0 || j >= n[1] || k < 0 || k >= n[2];
+      const std::array<std::array<int, 2>, 2> segments =
+          whole_row ? std::array<std::array<int, 2>, 2>{{{lo[0], hi[0]}, {0, 0}}}
+                    : std::array<std::array<int, 2>, 2>{{{lo[0], 0}, {n[0], hi[0]}}};
+      for (const auto& [first, last] : segments)
+        for (int i = first; i < last; ++i, ++index) {
+          const Vec3d x{coord(box, 0, i, dp), coord(box, 1, j, dp), coord(box, 2, k, dp)};
+          if (!range.contains(x)) continue;
+          part.points.push_back(x);
+          part.index.push_back(index);
+        }
+    }
+  part.total = index;
+  return part;
 }
 
 }  // namespace netsph

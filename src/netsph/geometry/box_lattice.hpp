@@ -50,6 +50,10 @@ struct LatticePart {
 };
 LatticePart fill_box_part(const LatticeBox& box, double dp, const AxisRange& range);
 
+/// wall_box_layers' points within `range`, each with its index in wall_box_layers' order.
+LatticePart wall_box_layers_part(const LatticeBox& box, double dp, const std::array<bool, 6>& faces,
+                                 int layers, const AxisRange& range);
+
 /// Wall particle positions: lattice points outside the box, up to `layers` spacings beyond
 /// each chosen face (order xmin, xmax, ymin, ymax, zmin, zmax); edges and corners between two
 /// chosen faces are filled so that no fluid particle sees a gap.

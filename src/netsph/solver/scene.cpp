@@ -208,25 +208,26 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
   for (std::size_t wi = 0; wi < spec.walls.size(); ++wi) {
     const auto& w = spec.walls[wi];
     const LatticeBox box = lattice_box(w.box, dims);
-    const auto pts = wall_box_layers(box, dp, w.faces, w.layers);
+    // Only the part near the region (a process's share of the walls in a distributed run).
+    const LatticePart part = wall_box_layers_part(box, dp, w.faces, w.layers, near);
+    const std::vector<Vec3d>& pts = part.points;
     std::vector<Vec3f> ghosts(pts.size());
     if (w.model == WallModel::Mdbc) {
       ghosts = box_wall_ghost_offsets(pts, box.min, lattice_max(box, dp), dims);
     }
     const Vec3f v0(w.motion.at(0.0));
-    p.reserve_more(static_cast<std::size_t>(
-        std::count_if(pts.begin(), pts.end(), [&](const Vec3d& x) { return near.contains(x); })));
+    const std::uint32_t first_id = p.next_id;
+    p.reserve_more(pts.size());
     for (std::size_t k = 0; k < pts.size(); ++k) {
-      if (!near.contains(pts[k])) {
-        ++p.next_id;  // another process's: the id stays the whole scene's
-        continue;
-      }
+      // The id the whole scene gives it.
+      p.next_id = first_id + static_cast<std::uint32_t>(part.index[k]);
       // Walls start hydrostatic with the highest free surface so that DBC does not need a
       // transient to build the pressure that holds the fluid up.
       p.add(pts[k], v0, hydrostatic_density(eos, gz, top_surface, pts[k].z), ParticleKind::Wall,
             static_cast<std::uint32_t>(wi), ghosts[k]);
     }
-    scene.sources.push_back({w.name, pts.size()});
+    p.next_id = first_id + static_cast<std::uint32_t>(part.total);
+    scene.sources.push_back({w.name, part.total});
   }
   add_bodies(spec, scene);
   std::vector<std::size_t> buffer_count(scene.zones.size(), 0);

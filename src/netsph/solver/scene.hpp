@@ -46,9 +46,9 @@ using WholeBounds = std::function<void(Vec3d& lo, Vec3d& hi)>;
 /// of the whole case: the particles whose coordinate along region.axis lies in the region,
 /// with the ids, positions, densities and kinds build_scene gives them, and the whole
 /// scene's domain (through `whole_bounds`, called once on every process). The parts of
-/// regions that tile the axis make up build_scene's particles exactly. The fills are
-/// generated only near the region; the walls' and bodies' particles (a surface, not a volume)
-/// in full and then trimmed. `sources` count the whole case's particles as generated; the
+/// regions that tile the axis make up build_scene's particles exactly. The fills and walls
+/// are generated only near the region; the bodies' particles (a few surfaces) in full and
+/// then trimmed. `sources` count the whole case's particles as generated; the
 /// removal counts and warnings are those of the part and the margin it is built with.
 Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
                        const WholeBounds& whole_bounds);
