@@ -11,10 +11,6 @@
 #include "netsph/net/knot_spring_solver.hpp"
 
 namespace netsph {
-namespace {}  // namespace
-}  // namespace netsph
-
-namespace netsph {
 namespace {
 
 // One knot on one twine (cases/net_tethered_knot.toml): over the second half of the run the

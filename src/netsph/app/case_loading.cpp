@@ -99,8 +99,8 @@ void check_case_fits_memory(const CaseSpec& spec, const std::string& backend) {
                             "{:.1f} GB of memory on the {} backend ({:.0f} B a particle), but "
                             "this machine has {:.1f} GB available. Use a larger simulation.dp "
                             "(memory falls as dp^-{}), a smaller domain or the case's reduced "
-                            "version, or run it over several machines (mpirun). "
-                            "NETSPH_SKIP_MEMORY_CHECK=1 skips this check",
+                            "version (mpirun does not help yet: its process 0 holds the whole "
+                            "case for the outputs). NETSPH_SKIP_MEMORY_CHECK=1 skips this check",
                             e.particles, gb(e.bytes), backend, per_particle, gb(*available),
                             spec.simulation.dimensions));
   }
