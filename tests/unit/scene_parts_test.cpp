@@ -157,8 +157,18 @@ TEST(SceneParts, CaseFilesWithWallsBodiesBuffersAndNetsSplitIntoTheirParts) {
   const std::vector<Split> splits = {
       // mDBC walls and a floating body straddling a cut.
       {"floating_box2d.toml", {"simulation.dp=0.02"}, 0, {0.2, 0.5, 0.51}},
-      // Inlet and outlet buffers (fills starting inside them), a periodic axis.
+      // Inlet and outlet buffers (fills starting inside them).
       {"channel2d.toml", {}, 0, {0.01, 0.5, 0.97}},
+      // A floating box across a periodic end: its particles past it are wrapped to the
+      // other end, into the first part.
+      {"poiseuille2d.toml",
+       {"domain.max=[0.3, 0.0, 0.13]", "fill=[{min=[0.0, 0.0, 0.0], max=[0.3, 0.0, 0.1]}]",
+        "wall=[{name=\"plates\", min=[0.0, 0.0, 0.0], max=[0.3, 0.0, 0.1], faces=[\"zmin\", "
+        "\"zmax\"], layers=3, model=\"mdbc\", slip=\"no_slip\"}]",
+        "body=[{name=\"box\", shape=\"box\", size=[0.02, 0.02, 0.02], center=[0.2965, 0, "
+        "0.035], motion=\"floating\", density=1000}]"},
+       0,
+       {0.005, 0.15, 0.29}},
       // The dam break's walls and fill, cut along z too.
       {"dambreak2d.toml", {"simulation.dp=0.04"}, 2, {0.3, 0.61}},
       // A coupled net: its knots are bodies.
