@@ -5,6 +5,7 @@
 // same calls in the same order.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -31,6 +32,11 @@ class Collectives {
   virtual std::vector<Bytes> exchange(const std::vector<Bytes>& send) = 0;
   /// Every rank's bytes on rank 0, by rank (an empty list elsewhere).
   virtual std::vector<Bytes> gather(const Bytes& mine) = 0;
+  /// Every rank's bytes handed to `take(rank, bytes)` on rank 0, one rank at a time in rank
+  /// order, so that rank 0 never holds them all at once (a whole run's particles gathered
+  /// for an output); `take` is called on rank 0 only.
+  virtual void gather_each(const Bytes& mine,
+                           const std::function<void(int, const Bytes&)>& take) = 0;
 };
 
 }  // namespace netsph

@@ -315,11 +315,18 @@ void DistributedSimulation::gather_into(Simulation* whole, bool particles) const
     if (whole) whole->adopt_global_state(*local_, diag_);
     return;
   }
-  const std::vector<Bytes> all = coll_.gather(exchange_.pack_owned(local_->particles()));
-  if (!whole) return;
+  // Into fresh arrays sized once, the view's old particles released first and each process's
+  // bytes unpacked as they come: process 0 never holds the run's particles twice.
+  const std::uint64_t total = coll_.sum(std::uint64_t{exchange_.owned_count()});
   ParticleSet p;
+  if (whole) {
+    whole->particles() = ParticleSet{};
+    p.reserve_more(static_cast<std::size_t>(total));
+  }
   p.next_id = local_->particles().next_id;
-  for (const Bytes& b : all) ParticleExchange::unpack(b, p);
+  coll_.gather_each(exchange_.pack_owned(local_->particles()),
+                    [&p](int, const Bytes& b) { ParticleExchange::unpack(b, p); });
+  if (!whole) return;
   whole->adopt_state(*local_, diag_, std::move(p));
 }
 

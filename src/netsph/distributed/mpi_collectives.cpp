@@ -151,6 +151,32 @@ std::vector<Bytes> MpiCollectives::gather(const Bytes& mine) {
   return out;
 }
 
+void MpiCollectives::gather_each(const Bytes& mine,
+                                 const std::function<void(int, const Bytes&)>& take) {
+  // Point to point, rank by rank: rank 0 holds one rank's bytes at a time, and no count or
+  // displacement spans the whole (MPI's int counts would cap a gather at 2 GB, 4.5e7
+  // particles).
+  constexpr int kCountTag = 71, kBytesTag = 72;
+  if (rank_ != 0) {
+    int count = count_of(mine.size());
+    check(MPI_Send(&count, 1, MPI_INT, 0, kCountTag, MPI_COMM_WORLD), "MPI_Send");
+    check(MPI_Send(mine.data(), count, MPI_BYTE, 0, kBytesTag, MPI_COMM_WORLD), "MPI_Send");
+    return;
+  }
+  take(0, mine);
+  Bytes received;
+  for (int r = 1; r < size_; ++r) {
+    int count = 0;
+    check(MPI_Recv(&count, 1, MPI_INT, r, kCountTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+          "MPI_Recv");
+    received.resize(static_cast<std::size_t>(count));
+    check(
+        MPI_Recv(received.data(), count, MPI_BYTE, r, kBytesTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "MPI_Recv");
+    take(r, received);
+  }
+}
+
 #else  // built without MPI
 
 MpiSession::MpiSession() {
@@ -179,6 +205,11 @@ std::vector<Bytes> MpiCollectives::exchange(const std::vector<Bytes>&) {
 }
 std::vector<Bytes> MpiCollectives::gather(const Bytes& mine) {
   return {mine};
+}
+
+void MpiCollectives::gather_each(const Bytes& mine,
+                                 const std::function<void(int, const Bytes&)>& take) {
+  take(0, mine);
 }
 
 #endif

@@ -33,6 +33,7 @@ class MpiCollectives final : public Collectives {
   void broadcast(std::string& text, int root) override;
   std::vector<Bytes> exchange(const std::vector<Bytes>& send) override;
   std::vector<Bytes> gather(const Bytes& mine) override;
+  void gather_each(const Bytes& mine, const std::function<void(int, const Bytes&)>& take) override;
 
  private:
   int rank_ = 0, size_ = 1;

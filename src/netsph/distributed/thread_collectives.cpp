@@ -72,4 +72,10 @@ std::vector<Bytes> ThreadCollectives::gather(const Bytes& mine) {
   return received;
 }
 
+void ThreadCollectives::gather_each(const Bytes& mine,
+                                    const std::function<void(int, const Bytes&)>& take) {
+  const std::vector<Bytes> all = gather(mine);
+  for (std::size_t r = 0; r < all.size(); ++r) take(static_cast<int>(r), all[r]);
+}
+
 }  // namespace netsph

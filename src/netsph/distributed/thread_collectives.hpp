@@ -37,6 +37,7 @@ class ThreadCollectives final : public Collectives {
   void broadcast(std::string& text, int root) override;
   std::vector<Bytes> exchange(const std::vector<Bytes>& send) override;
   std::vector<Bytes> gather(const Bytes& mine) override;
+  void gather_each(const Bytes& mine, const std::function<void(int, const Bytes&)>& take) override;
 
  private:
   /// Publishes v, waits for all, returns everyone's values by rank (valid until the next call).
