@@ -43,6 +43,8 @@ std::unique_ptr<Simulation> own_part(const CaseSpec& spec, Collectives& coll,
     if (resume) sim->restore_state(*resume, region);
   } catch (const Error& e) {
     error = e;
+  } catch (const std::exception& e) {  // out of memory in one part, say: stop all, not hang
+    error = Error("distributed set-up", e.what());
   }
   rethrow_if_any_failed(coll, error ? &*error : nullptr);
   return sim;
