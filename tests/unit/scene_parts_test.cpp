@@ -6,15 +6,29 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "netsph/case/case_reader.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/solver/net_coupling.hpp"
 #include "netsph/solver/scene.hpp"
+#include "scene_cases.hpp"
 
 namespace netsph {
 namespace {
+
+/// `part` holds exactly the points of `whole` in `range`, each with its index there.
+void expect_part_of(const LatticePart& part, const std::vector<Vec3d>& whole,
+                    const AxisRange& range) {
+  EXPECT_EQ(part.total, whole.size());
+  std::vector<std::uint64_t> expected;
+  for (std::uint64_t i = 0; i < whole.size(); ++i)
+    if (range.contains(whole[i])) expected.push_back(i);
+  ASSERT_EQ(part.index, expected);
+  for (std::size_t k = 0; k < part.points.size(); ++k)
+    EXPECT_EQ(part.points[k], whole[part.index[k]]);
+}
 
 TEST(SceneParts, APartOfAFillIsTheWholeFillsPointsInTheRangeWithTheirIndexes) {
   const double dp = 0.1;
@@ -25,14 +39,8 @@ TEST(SceneParts, APartOfAFillIsTheWholeFillsPointsInTheRangeWithTheirIndexes) {
     // between two, outside the box, and an empty range.
     for (const AxisRange range : {AxisRange{0, 0.35, 0.62}, AxisRange{2, -1.0, 0.3},
                                   AxisRange{0, 0.9, 5.0}, AxisRange{2, 0.31, 0.32}}) {
-      const LatticePart part = fill_box_part(box, dp, range);
-      EXPECT_EQ(part.total, whole.size());
-      std::vector<std::uint64_t> expected;
-      for (std::uint64_t i = 0; i < whole.size(); ++i)
-        if (range.contains(whole[i])) expected.push_back(i);
-      ASSERT_EQ(part.index, expected) << dims << "D, axis " << range.axis;
-      for (std::size_t k = 0; k < part.points.size(); ++k)
-        EXPECT_EQ(part.points[k], whole[part.index[k]]);
+      SCOPED_TRACE(std::to_string(dims) + "D, axis " + std::to_string(range.axis));
+      expect_part_of(fill_box_part(box, dp, range), whole, range);
     }
   }
 }
@@ -48,14 +56,8 @@ TEST(SceneParts, APartOfAWallIsTheWholeWallsPointsInTheRangeWithTheirIndexes) {
       const std::vector<Vec3d> whole = wall_box_layers(box, dp, faces, 3);
       for (const AxisRange range : {AxisRange{0, 0.35, 0.62}, AxisRange{2, -1.0, 0.3},
                                     AxisRange{0, -0.15, -0.05}, AxisRange{2, 0.31, 0.32}}) {
-        const LatticePart part = wall_box_layers_part(box, dp, faces, 3, range);
-        EXPECT_EQ(part.total, whole.size());
-        std::vector<std::uint64_t> expected;
-        for (std::uint64_t i = 0; i < whole.size(); ++i)
-          if (range.contains(whole[i])) expected.push_back(i);
-        ASSERT_EQ(part.index, expected) << dims << "D, axis " << range.axis;
-        for (std::size_t k = 0; k < part.points.size(); ++k)
-          EXPECT_EQ(part.points[k], whole[part.index[k]]);
+        SCOPED_TRACE(std::to_string(dims) + "D, axis " + std::to_string(range.axis));
+        expect_part_of(wall_box_layers_part(box, dp, faces, 3, range), whole, range);
       }
     }
   }
@@ -118,29 +120,12 @@ void expect_parts_make_up_the_whole(const CaseSpec& spec, int axis, std::vector<
   EXPECT_LT(largest, whole.particles.size());
 }
 
-CaseSpec fluid_cube(double dp) {
-  CaseSpec spec;
-  spec.simulation.dimensions = 3;
-  spec.simulation.dp = dp;
-  spec.fluid.gravity = {0, 0, -9.81};
-  FillSpec f;
-  f.box = {{0, 0, 0}, {0.4, 0.4, 0.4}};
-  spec.fills.push_back(f);
-  return spec;
-}
-
 TEST(SceneParts, OverlappingFillsAreRemovedAcrossTheCutsAsInTheWholeScene) {
-  // Three copies of a fill shifted by 0.3 dp and 0.6 dp along x: the second goes because of
-  // the first, the third stays only where the second (removed) was its only neighbour, so
-  // the fate of a particle near a cut depends on a chain of two others across it.
+  // The second copy goes because of the first, the third stays only where the second
+  // (removed) was its only neighbour, so the fate of a particle near a cut depends on a chain
+  // of two others across it.
   const double dp = 0.04;
-  CaseSpec spec = fluid_cube(dp);
-  FillSpec f = spec.fills[0];
-  for (const double shift : {0.3 * dp, 0.6 * dp}) {
-    f.box = {spec.fills[0].box.min + Vec3d{shift, 0, 0},
-             spec.fills[0].box.max + Vec3d{shift, 0, 0}};
-    spec.fills.push_back(f);
-  }
+  const CaseSpec spec = test::shifted_fill_copies(dp);
   // Cuts on the first fill's lattice (x = 0.5 dp + k dp), on the others', and between.
   expect_parts_make_up_the_whole(spec, 0, {2.5 * dp, 4.8 * dp, 6.1 * dp, 9.5 * dp});
   expect_parts_make_up_the_whole(spec, 2, {0.13, 0.3});

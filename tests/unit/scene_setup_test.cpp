@@ -18,6 +18,7 @@
 #include "netsph/geometry/shapes.hpp"
 #include "netsph/solver/memory_preflight.hpp"
 #include "netsph/solver/scene.hpp"
+#include "scene_cases.hpp"
 
 namespace netsph {
 namespace {
@@ -56,30 +57,12 @@ TEST(BoxBins, CandidatesHoldEveryBoxThatContainsThePoint) {
   EXPECT_TRUE(bins.candidates({5, 5, 5}).empty());
 }
 
-CaseSpec fluid_cube(double dp) {
-  CaseSpec spec;
-  spec.simulation.dimensions = 3;
-  spec.simulation.dp = dp;
-  spec.fluid.gravity = {0, 0, -9.81};
-  FillSpec f;
-  f.box = {{0, 0, 0}, {0.4, 0.4, 0.4}};
-  spec.fills.push_back(f);
-  return spec;
-}
+using test::fluid_cube;
 
 TEST(SceneSetup, OverlappingFillsKeepTheFirstAndARemovedParticleRemovesNothing) {
-  // Three copies of a fill, shifted by 0.3 dp and 0.6 dp along x. The second lies 0.3 dp from
-  // the first everywhere: all of it goes. The third is 0.3 dp from the second (removed: it
-  // removes nothing) and 0.4 dp from the first's next column, except its last column, 0.6 dp
-  // beyond the first's last: only that column stays.
+  // test::shifted_fill_copies says which particles stay.
   const double dp = 0.04;
-  CaseSpec spec = fluid_cube(dp);
-  FillSpec f = spec.fills[0];
-  for (const double shift : {0.3 * dp, 0.6 * dp}) {
-    f.box = {spec.fills[0].box.min + Vec3d{shift, 0, 0},
-             spec.fills[0].box.max + Vec3d{shift, 0, 0}};
-    spec.fills.push_back(f);
-  }
+  const CaseSpec spec = test::shifted_fill_copies(dp);
   const Scene scene = build_scene(spec);
   const std::size_t per_fill = 10 * 10 * 10, column = 10 * 10;
   EXPECT_EQ(scene.particles.count(ParticleKind::Fluid), per_fill + column);
