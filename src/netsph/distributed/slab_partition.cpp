@@ -134,7 +134,8 @@ SlabPartition balanced_slabs(const ParticleSet& own, const CellGrid& grid, const
     hi_p = {std::max(hi_p.x, p.x), std::max(hi_p.y, p.y), std::max(hi_p.z, p.z)};
   }
   for (int a = 0; a < 3; ++a) lo_p[a] = -coll.max(-lo_p[a]), hi_p[a] = coll.max(hi_p[a]);
-  const bool any = coll.sum(static_cast<std::uint64_t>(own.size())) > 0;
+  // With no particles anywhere the box is still inverted (domain_max to domain_min).
+  const bool any = lo_p.x <= hi_p.x;
   const Vec3d extent = any ? hi_p - lo_p : domain_max - domain_min;
   for (int a = 1; a < 3; ++a)
     if (extent[a] > extent[s.axis]) s.axis = a;

@@ -55,7 +55,6 @@ LatticePart fill_box_part(const LatticeBox& box, double dp, const AxisRange& ran
   while (lo[a] < n[a] && !(coord(box, a, lo[a], dp) >= range.lo)) ++lo[a];
   hi[a] = lo[a];
   while (hi[a] < n[a] && coord(box, a, hi[a], dp) < range.hi) ++hi[a];
-  if (box.dims == 2 && a == 1) lo[a] = 0, hi[a] = range.contains(Vec3d{}) ? 1 : 0;
   const std::size_t kept = static_cast<std::size_t>(std::max(0, hi[0] - lo[0])) *
                            std::max(0, hi[1] - lo[1]) * std::max(0, hi[2] - lo[2]);
   part.points.reserve(kept);

@@ -13,7 +13,7 @@
 namespace netsph {
 
 Simulation::Simulation(const CaseSpec& spec, StepBackend backend)
-    : Simulation(spec, backend, [](const CaseSpec& s) { return build_scene(s); }) {}
+    : Simulation(spec, backend, build_scene) {}
 
 Simulation::Simulation(const CaseSpec& spec, StepBackend backend,
                        const std::function<Scene(const CaseSpec&)>& build)
