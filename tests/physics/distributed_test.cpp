@@ -5,18 +5,17 @@
 // exchange are checked without mpirun; tests/distributed_mpi_test.sh runs the same step under
 // mpirun.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <thread>
 
 #include "case_runs.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/distributed/distributed_simulation.hpp"
 #include "netsph/distributed/thread_collectives.hpp"
 #include "state_difference.hpp"
+#include "thread_processes.hpp"
 
 namespace netsph {
 namespace {
@@ -41,29 +40,18 @@ SplitRun run_split(const CaseSpec& spec, int processes, int steps, RebalancePoli
   run.whole = std::make_unique<Simulation>(spec);
   run.owned.resize(processes);
   run.work.resize(processes);
-  run.errors.resize(processes);
-  ThreadTeam team(processes);
-  std::vector<std::thread> threads;
-  for (int r = 0; r < processes; ++r) {
-    threads.emplace_back([&, r] {
-      omp_set_num_threads(1);
-      try {
-        ThreadCollectives coll(team, r);
-        DistributedSimulation sim(spec, coll, resume, policy);
-        for (int s = 0; s < steps; ++s) {
-          sim.step();
-          if (r == 0) run.dts.push_back(sim.local().last_dt());
-        }
-        run.owned[r] = sim.owned_count();
-        run.work[r] = sim.own_work();
-        if (r == 0) run.rebalances = sim.rebalances();
-        sim.gather_into(r == 0 ? run.whole.get() : nullptr, true);
-      } catch (const std::exception& e) {
-        run.errors[r] = e.what();
-      }
-    });
-  }
-  for (auto& t : threads) t.join();
+  run.errors = test::on_thread_processes(processes, [&](ThreadCollectives& coll) {
+    const int r = coll.rank();
+    DistributedSimulation sim(spec, coll, resume, policy);
+    for (int s = 0; s < steps; ++s) {
+      sim.step();
+      if (r == 0) run.dts.push_back(sim.local().last_dt());
+    }
+    run.owned[r] = sim.owned_count();
+    run.work[r] = sim.own_work();
+    if (r == 0) run.rebalances = sim.rebalances();
+    sim.gather_into(r == 0 ? run.whole.get() : nullptr);
+  });
   return run;
 }
 
@@ -221,21 +209,8 @@ TEST(Distributed, AnErrorInOneProcesssPartOfTheSceneStopsEveryProcess) {
   const CaseSpec spec =
       test::load_case("dambreak2d.toml", {"simulation.dp=0.04", "domain.max=[4.0, 0.0, 8.0]"});
   EXPECT_THROW(Simulation{spec}, Error);
-  std::vector<std::string> errors(3);
-  ThreadTeam team(3);
-  std::vector<std::thread> threads;
-  for (int r = 0; r < 3; ++r) {
-    threads.emplace_back([&, r] {
-      omp_set_num_threads(1);
-      try {
-        ThreadCollectives coll(team, r);
-        DistributedSimulation sim(spec, coll);
-      } catch (const Error& e) {
-        errors[r] = e.what();
-      }
-    });
-  }
-  for (auto& t : threads) t.join();
+  const std::vector<std::string> errors = test::on_thread_processes(
+      3, [&](ThreadCollectives& coll) { DistributedSimulation(spec, coll); });
   for (int r = 0; r < 3; ++r) {
     EXPECT_NE(errors[r].find("lies outside [domain]"), std::string::npos)
         << "process " << r << ": " << errors[r];

@@ -1,7 +1,6 @@
 // output.snapshot_region (solver/run_outputs.cpp): a snapshot holds exactly the particles that
 // are inside the box when it is written, with their own fields; without a region, all of them.
 #include <gtest/gtest.h>
-#include <hdf5.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "case_runs.hpp"
+#include "hdf5_read.hpp"
 #include "netsph/solver/run_outputs.hpp"
 
 namespace netsph {
@@ -18,25 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-template <class T>
-std::vector<T> read_all(const fs::path& file, const char* name, hid_t mem_type, std::size_t per) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  EXPECT_GE(f, 0) << file;
-  const hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
-  const hid_t s = H5Dget_space(d);
-  hsize_t dims[2] = {0, 0};
-  H5Sget_simple_extent_dims(s, dims, nullptr);
-  std::vector<T> out(dims[0] * per);  // per: values per row (3 for vectors)
-  if (!out.empty()) H5Dread(d, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
-  H5Sclose(s), H5Dclose(d), H5Fclose(f);
-  return out;
-}
-
 /// The ids and positions in a snapshot file against those of the particles inside the region.
 void expect_snapshot_holds_the_region(const fs::path& h5, const Simulation& sim) {
-  const auto ids = read_all<std::uint32_t>(h5, "id", H5T_NATIVE_UINT32, 1);
-  const auto pos = read_all<double>(h5, "position", H5T_NATIVE_DOUBLE, 3);
-  const auto rho = read_all<float>(h5, "density", H5T_NATIVE_FLOAT, 1);
+  const auto ids = test::read_dataset<std::uint32_t>(h5, "id", H5T_NATIVE_UINT32, 1);
+  const auto pos = test::read_dataset<double>(h5, "position", H5T_NATIVE_DOUBLE, 3);
+  const auto rho = test::read_dataset<float>(h5, "density", H5T_NATIVE_FLOAT, 1);
   ASSERT_EQ(pos.size(), 3 * ids.size());
   const ParticleSet& p = sim.particles();
   std::set<std::uint32_t> expected;
@@ -69,17 +55,18 @@ TEST(SnapshotRegion, SnapshotsHoldExactlyTheParticlesInsideTheBox) {
                       {"simulation.end_time=0.01", "output.snapshot_every=0.005",
                        "output.snapshot_region={ min = [0.2, 0, -0.1], max = [0.6, 0, 0.3] }"});
   Simulation sim(spec);
+  SimulationParticles particles(sim);
   const fs::path dir = temp_dir("box");
   {
     RunOutputs out(sim, dir, true);
-    out.maybe_write(sim, 0);
+    out.maybe_write(sim, particles, 0);
     expect_snapshot_holds_the_region(dir / "snapshots" / "particles_000000.h5", sim);
     const std::size_t first = snapshot_particle_count(sim);
     std::printf("snapshot 0: %zu of %zu particles\n", first, sim.particles().size());
     EXPECT_GT(first, 500u);
     EXPECT_LT(first, sim.particles().size() / 2);
     while (sim.time() < 0.01) sim.step();
-    out.write_final(sim, 0);
+    out.write_final(sim, particles, 0);
     expect_snapshot_holds_the_region(dir / "snapshots" / "particles_000001.h5", sim);
   }
   fs::remove_all(dir);
@@ -89,12 +76,13 @@ TEST(SnapshotRegion, WithoutARegionEveryParticleIsWritten) {
   const CaseSpec spec = test::load_case("hydrostatic2d.toml",
                                         {"simulation.end_time=0.01", "output.snapshot_every=0.01"});
   Simulation sim(spec);
+  SimulationParticles particles(sim);
   const fs::path dir = temp_dir("all");
   {
     RunOutputs out(sim, dir, true);
-    out.maybe_write(sim, 0);
-    const auto ids = read_all<std::uint32_t>(dir / "snapshots" / "particles_000000.h5", "id",
-                                             H5T_NATIVE_UINT32, 1);
+    out.maybe_write(sim, particles, 0);
+    const auto ids = test::read_dataset<std::uint32_t>(dir / "snapshots" / "particles_000000.h5",
+                                                       "id", H5T_NATIVE_UINT32, 1);
     EXPECT_EQ(ids.size(), sim.particles().size());
     EXPECT_EQ(snapshot_particle_count(sim), sim.particles().size());
   }

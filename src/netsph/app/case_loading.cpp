@@ -98,9 +98,10 @@ void check_case_fits_memory(const CaseSpec& spec, const std::string& backend) {
                 fmt::format("the case has about {:.2g} particles (fills and walls) and needs about "
                             "{:.1f} GB of memory on the {} backend ({:.0f} B a particle), but "
                             "this machine has {:.1f} GB available. Use a larger simulation.dp "
-                            "(memory falls as dp^-{}), a smaller domain or the case's reduced "
-                            "version (mpirun does not help yet: its process 0 holds the whole "
-                            "case for the outputs). NETSPH_SKIP_MEMORY_CHECK=1 skips this check",
+                            "(memory falls as dp^-{}), a smaller domain, the case's reduced "
+                            "version, or several machines (mpirun -n N netsph run: each process "
+                            "holds its slab of the case and a halo, about 300 B per particle of "
+                            "its own). NETSPH_SKIP_MEMORY_CHECK=1 skips this check",
                             e.particles, gb(e.bytes), backend, per_particle, gb(*available),
                             spec.simulation.dimensions));
   }

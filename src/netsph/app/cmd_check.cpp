@@ -26,7 +26,9 @@ int check_command(const CheckArgs& args) {
   check_case_fits_memory(spec, backend);
   const auto built = std::chrono::steady_clock::now();
   Simulation sim(spec, step_backend(backend));
-  log_scene(sim, std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());
+  SimulationParticles particles(sim);
+  log_scene(sim, particles,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());
 
   // A short timing sample: the first step also sizes every work array, so memory is known.
   const auto t0 = std::chrono::steady_clock::now();
@@ -63,7 +65,8 @@ int check_command(const CheckArgs& args) {
       fmt::format("{:.0f} min {:02.0f} s", std::floor(n_total * per_step / 60),
                   std::fmod(n_total * per_step, 60.0)),
       per_step / mean_dt / 3600);
-  if (spec.output.snapshots) spdlog::info("{}", describe_snapshots(sim, snapshot_volume(sim)));
+  if (spec.output.snapshots)
+    spdlog::info("{}", describe_snapshots(sim, snapshot_volume(sim, particles)));
   spdlog::info("a series row every {:g} s", series_interval(spec));
   return 0;
 }

@@ -15,6 +15,7 @@
 #include "netsph/core/error.hpp"
 #include "netsph/distributed/distributed_stepper.hpp"
 #include "netsph/distributed/mpi_collectives.hpp"
+#include "netsph/distributed/scene_parts.hpp"
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/net/standalone_net_run.hpp"
 #include "netsph/solver/runner.hpp"
@@ -24,8 +25,9 @@ namespace {
 
 /// Logs what the snapshots will take and warns when that is more than the disk holds free: a
 /// run that fills the disk fails at its next write, hours in.
-void warn_if_snapshots_overfill(const Simulation& sim, const std::filesystem::path& out) {
-  const SnapshotVolume v = snapshot_volume(sim);
+void warn_if_snapshots_overfill(const Simulation& sim, OutputParticles& particles,
+                                const std::filesystem::path& out) {
+  const SnapshotVolume v = snapshot_volume(sim, particles);
   spdlog::info("{}", describe_snapshots(sim, v));
   std::filesystem::path at = std::filesystem::absolute(out);
   std::error_code ec;
@@ -141,8 +143,16 @@ int run_command(const RunArgs& args) {
   std::vector<std::string> overrides = args.case_choice.overrides;
   CaseSpec spec;
   if (restart) {
-    checkpoint = read_checkpoint_file(checkpoint_path(args.restart_dir));
+    // A process of a distributed run reads only the particles of its part of the case, once
+    // the case (in the checkpoint) says where that lies; the outputs' view holds none.
+    const std::filesystem::path file = checkpoint_path(args.restart_dir);
+    checkpoint = coll ? read_checkpoint_file(file, Simulation::particle_rows(AxisRange{0, 0, 0}))
+                      : read_checkpoint_file(file);
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
+    if (coll) {
+      const AxisRange part = set_up_region(spec, coll->size(), coll->rank());
+      checkpoint = read_checkpoint_file(file, Simulation::particle_rows(part));
+    }
     record =
         case_record(checkpoint.text_of("case.toml"), checkpoint.text_of("case.source"), overrides);
   } else {
@@ -182,10 +192,15 @@ int run_command(const RunArgs& args) {
     if (restart) sim->restore_state(checkpoint);
     stepper = std::make_unique<SingleStepper>(*sim);
   }
-  if (reporting) {
-    log_scene(*stepper->view(),
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());
-    if (spec.output.snapshots) warn_if_snapshots_overfill(*stepper->view(), out);
+  // The report reads the particles' counts, from every process in a distributed run.
+  const double setup_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count();
+  if (const Simulation* view = stepper->view()) {
+    log_scene(*view, stepper->particles(), setup_s);
+    if (spec.output.snapshots) warn_if_snapshots_overfill(*view, stepper->particles(), out);
+    stepper->outputs_written();
+  } else {
+    stepper->serve_outputs();
   }
   if (restart) {
     spdlog::info("restarting from {} at t = {:.6g} s (step {}), to end_time = {:.6g} s",

@@ -13,18 +13,19 @@
 
 namespace netsph::app {
 
-void log_scene(const Simulation& sim, double setup_seconds) {
+void log_scene(const Simulation& sim, OutputParticles& particles, double setup_seconds) {
   const Scene& s = sim.scene();
   const FluidModel& m = sim.model();
   const CaseSpec& spec = sim.spec();
-  const auto& p = sim.particles();
+  const GlobalMeasures counts = particles.measure();
+  const std::uint64_t total = particles.count(ParticleSelection::All);
   spdlog::info("{}D, dp = {:g} m, h = {:g} m ({} kernel), c0 = {:.4g} m/s, rho0 = {:g} kg/m^3",
                m.dims, spec.simulation.dp, static_cast<double>(m.kernel.h),
                m.kernel_type == KernelType::Wendland ? "Wendland" : "cubic spline", s.sound_speed,
                static_cast<double>(m.eos.rho0));
   spdlog::info("particles: {} fluid, {} wall, {} body, {} open-boundary buffer, {} total{}",
-               p.count(ParticleKind::Fluid), p.count(ParticleKind::Wall),
-               p.count(ParticleKind::Body), p.count(ParticleKind::Buffer), p.size(),
+               counts.fluid, counts.walls, total - counts.fluid - counts.walls - counts.buffer,
+               counts.buffer, total,
                setup_seconds >= 0 ? fmt::format(" (set up in {:.1f} s)", setup_seconds) : "");
   const char* unit = m.dims == 2 ? "/m" : "";
   // A net's knots are bodies too (hundreds of them): one line per net instead of one per knot.
@@ -65,10 +66,10 @@ void log_scene(const Simulation& sim, double setup_seconds) {
   for (const auto& w : s.warnings) spdlog::warn("{}", w);
 }
 
-SnapshotVolume snapshot_volume(const Simulation& sim) {
+SnapshotVolume snapshot_volume(const Simulation& sim, OutputParticles& particles) {
   const CaseSpec& spec = sim.spec();
   SnapshotVolume v;
-  v.particles = snapshot_particle_count(sim);
+  v.particles = particles.count(ParticleSelection::Snapshot);
   v.bytes_each = static_cast<double>(v.particles * SnapshotWriter::bytes_per_particle());
   const double every = snapshot_interval(spec);
   v.count =

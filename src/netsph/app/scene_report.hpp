@@ -3,12 +3,15 @@
 // domain and memory. Shared by `run` (logged) and `check` (printed).
 #include <string>
 
+#include "netsph/solver/output_particles.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {
 
-/// setup_seconds: how long the case took to build (not shown when negative).
-void log_scene(const Simulation& sim, double setup_seconds = -1);
+/// The scene of `sim`, with the counts of `particles` (the run's particles: a distributed
+/// run's view holds none). setup_seconds: how long the case took to build (not shown when
+/// negative).
+void log_scene(const Simulation& sim, OutputParticles& particles, double setup_seconds = -1);
 
 /// What the particle snapshots of a whole run will take on disk, from the present particles.
 struct SnapshotVolume {
@@ -17,7 +20,7 @@ struct SnapshotVolume {
   int count = 0;              ///< snapshots over the run, t = 0 and the end included
   double total() const { return bytes_each * count; }
 };
-SnapshotVolume snapshot_volume(const Simulation& sim);
+SnapshotVolume snapshot_volume(const Simulation& sim, OutputParticles& particles);
 /// "snapshots every 0.1 s: 41 of 3.3e6 particles (inside output.snapshot_region), 190 MB each,
 /// 7.6 GB in all"
 std::string describe_snapshots(const Simulation& sim, const SnapshotVolume& v);

@@ -96,6 +96,9 @@ DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& 
   // The parts go to the owners of the balanced slabs, and the halo is sent.
   exchange_.own_all(sim.particles());
   check_lost(exchange_.exchange(sim.particles(), sim.grid()));
+  // Sorted as a step would, so that outputs before the first step find the particles with
+  // the grid (sample_own).
+  sim.sort_by_cell();
   std::vector<double> held = {static_cast<double>(sim.particles().size()),
                               static_cast<double>(exchange_.owned_count())};
   coll_.sum(held);
@@ -121,6 +124,8 @@ DistributedSimulation::DistributedSimulation(const CaseSpec& spec, Collectives& 
 DistributedSimulation::~DistributedSimulation() = default;
 
 void DistributedSimulation::step() {
+  ExchangeReport moved;
+  if (exchange_due_) moved = exchange_particles();
   std::string message;
   bool failed = false;
   const auto t0 = std::chrono::steady_clock::now();
@@ -130,8 +135,7 @@ void DistributedSimulation::step() {
     failed = true;
     message = e.message();
   }
-  const auto t1 = std::chrono::steady_clock::now();
-  step_seconds_ += std::chrono::duration<double>(t1 - t0).count();
+  step_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // The step's collectives all come before the checks that throw (solver/simulation.cpp), so
   // every process gets here; the first to fail speaks for all.
   const int first = coll_.min(failed ? coll_.rank() : coll_.size());
@@ -141,17 +145,28 @@ void DistributedSimulation::step() {
                                            ? message
                                            : fmt::format("{} (process {})", message, first));
   }
+  // The exchange's losses and the step's open-boundary events, over all processes: the
+  // diagnostics are the whole run's as of this step.
+  check_lost(moved);
+  exchange_due_ = true;
+}
+
+ExchangeReport DistributedSimulation::exchange_particles() {
+  // Before the step rather than after the last: between steps the particles stay where the
+  // step left them, with the grid it sorted them into, for the outputs (as on one process,
+  // whose step drops the particles that left the domain when it sorts them).
+  exchange_due_ = false;
   Simulation& sim = *local_;
+  const auto t0 = std::chrono::steady_clock::now();
   const ExchangeReport report = exchange_.exchange(sim.particles(), sim.grid());
-  const auto t2 = std::chrono::steady_clock::now();
-  exchange_seconds_ += std::chrono::duration<double>(t2 - t1).count();
-  check_lost(report);
+  exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (rebalance_.check_every > 0 && sim.steps() % rebalance_.check_every == 0) {
-    const auto t3 = std::chrono::steady_clock::now();
+    const auto t1 = std::chrono::steady_clock::now();
     rebalance_if_needed();
     exchange_seconds_ +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t3).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   }
+  return report;
 }
 
 double DistributedSimulation::own_work() const {
@@ -312,24 +327,12 @@ void DistributedSimulation::check_lost(const ExchangeReport& report) {
                    initial_fluid_, last_lost_);
 }
 
-void DistributedSimulation::gather_into(Simulation* whole, bool particles) const {
-  if (!particles) {
-    if (whole) whole->adopt_global_state(*local_, diag_);
-    return;
-  }
-  // Into fresh arrays sized once, the view's old particles released first and each process's
-  // bytes unpacked as they come: process 0 never holds the run's particles twice.
-  const std::uint64_t total = coll_.sum(std::uint64_t{exchange_.owned_count()});
+void DistributedSimulation::gather_into(Simulation* whole) const {
   ParticleSet p;
-  if (whole) {
-    whole->particles() = ParticleSet{};
-    p.reserve_more(static_cast<std::size_t>(total));
-  }
   p.next_id = local_->particles().next_id;
   coll_.gather_each(exchange_.pack_owned(local_->particles()),
                     [&p](int, const Bytes& b) { ParticleExchange::unpack(b, p); });
-  if (!whole) return;
-  whole->adopt_state(*local_, diag_, std::move(p));
+  if (whole) whole->adopt_state(*local_, diag_, std::move(p));
 }
 
 }  // namespace netsph

@@ -3,9 +3,13 @@
 // axis the particles spread furthest (slab_partition.hpp). Every process keeps its own
 // particles and a halo, and steps them with the CPU backend; dt, the bodies' loads and the
 // largest speed are reduced over the processes inside the step (solver/step_partition.hpp),
-// and particles move between processes after it (particle_exchange.hpp). Bodies and nets are
-// advanced by every process alike from the summed loads. The outputs read a whole Simulation
-// on process 0, which gather_into() fills when they need particles.
+// and particles move between processes before the next (particle_exchange.hpp). Bodies and
+// nets are advanced by every process alike from the summed loads.
+//
+// Between steps each process's particles are those the step moved, sorted as at its start,
+// as one process's are: the outputs measure and sample each process's own particles with its
+// grid and sum them over the processes (measure_own, sample_own), and take the particles
+// themselves from one process at a time (pack_own; distributed_stepper.hpp).
 //
 // The slabs are cut again as the flow moves particles between them (RebalancePolicy): every
 // few steps the processes compare their own work (particle counts weighted as at the start),
@@ -21,6 +25,7 @@
 #include "netsph/distributed/collectives.hpp"
 #include "netsph/distributed/particle_exchange.hpp"
 #include "netsph/distributed/slab_partition.hpp"
+#include "netsph/solver/output_particles.hpp"
 #include "netsph/solver/simulation.hpp"
 #include "netsph/solver/step_partition.hpp"
 
@@ -45,8 +50,9 @@ class DistributedSimulation final : public StepPartition {
                         const CheckpointData* resume = nullptr, RebalancePolicy rebalance = {});
   ~DistributedSimulation() override;
 
-  /// One step on every process (collective). Throws SimulationUnstable on every process alike
-  /// when any of them finds the state unusable, with that process's diagnosis.
+  /// One step on every process (collective), after the exchange of the particles the last one
+  /// moved. Throws SimulationUnstable on every process alike when any of them finds the state
+  /// unusable, with that process's diagnosis.
   void step();
 
   /// This process's part: its own particles and the halo.
@@ -73,10 +79,19 @@ class DistributedSimulation final : public StepPartition {
   /// This process's share of a step's work: its own particles weighted by particle_work.
   double own_work() const;
 
-  /// Collective: process 0 passes a Simulation of the same case, which receives every
-  /// process's own particles and the run's time, bodies, nets and diagnostics; the others
-  /// pass null. With `particles` false only the latter (no communication).
-  void gather_into(Simulation* whole, bool particles) const;
+  /// Collective (for tests): process 0 passes a Simulation of the same case, which receives
+  /// every process's own particles and the run's time, bodies, nets and diagnostics; the
+  /// others pass null.
+  void gather_into(Simulation* whole) const;
+
+  // This process's share of the outputs' reads (distributed_simulation_outputs.cpp).
+  /// The measures of its own particles.
+  GlobalMeasures measure_own() const;
+  /// The Shepard sums at `points` over its own fluid particles.
+  void sample_own(std::span<const Vec3d> points, std::span<ShepardSums> sums) const;
+  /// Its own particles of `which`: how many, and packed (ParticleExchange::unpack).
+  std::uint64_t count_own(ParticleSelection which) const;
+  Bytes pack_own(ParticleSelection which) const;
 
   // StepPartition
   bool owns(const Vec3d& p) const override { return slabs_.owner_of(p) == coll_.rank(); }
@@ -86,6 +101,12 @@ class DistributedSimulation final : public StepPartition {
 
  private:
   void check_lost(const ExchangeReport& report);
+  /// Collective: sends the particles the last step moved to their owners, and the halo
+  /// (and cuts the slabs again when due); returns what check_lost still has to count.
+  ExchangeReport exchange_particles();
+  /// keep[i]: whether this process owns particle i (and, for the snapshots, it lies in their
+  /// region).
+  std::vector<std::uint8_t> own_mask(ParticleSelection which) const;
   /// Collective: cuts the slabs again if the processes' own work is out of balance, and moves
   /// the particles that changed slab.
   void rebalance_if_needed();
@@ -108,6 +129,7 @@ class DistributedSimulation final : public StepPartition {
   mutable double wait_seconds_ = 0;  // in the reductions the step calls
   RebalancePolicy rebalance_;
   int rebalances_ = 0;
+  bool exchange_due_ = false;  // the last step moved particles the exchange has not sent
   std::vector<StepDiagnostics::Lost> last_lost_;
   StepDiagnostics diag_;
 };

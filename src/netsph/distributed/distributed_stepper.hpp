@@ -1,9 +1,13 @@
 #pragma once
 // A distributed run as run_stepped() drives it (solver/run_stepper.hpp): every process steps
-// its DistributedSimulation; process 0 also holds a whole Simulation of the case, the view the
-// outputs read, into which the processes' particles are gathered only when an output needs
-// them (snapshots, series rows, probe samples, checkpoints), so a step costs no gather.
-// Checkpoints hold the whole state: a distributed run can be continued as one process.
+// its DistributedSimulation; process 0 also holds the view, a Simulation of the case without
+// particles whose time, bodies, nets and diagnostics the outputs read. The outputs' reads of the
+// particles (output_particles.hpp) are collective operations that process 0 names to the others,
+// which serve them until it says it is done: measures and probe samples summed over each process's
+// own particles, snapshots and checkpoints written from one process's particles at a time. So
+// no process holds the whole run's particles while it runs, and a step without outputs costs
+// one broadcast. Checkpoints hold the whole state: a distributed run can be continued as one
+// process.
 #include <memory>
 
 #include "netsph/distributed/distributed_simulation.hpp"
@@ -27,8 +31,11 @@ class DistributedStepper final : public RunStepper {
   double bytes_per_particle() const override;
   int processes() const override { return coll_.size(); }
   const Simulation* view() const override { return view_.get(); }
-  void refresh_view(bool particles) override { sim_.gather_into(view_.get(), particles); }
-  bool from_view_process(bool flag) override;
+  void refresh_view() override;
+  OutputParticles& particles() override;
+  void outputs_written() override;
+  void outputs_failed(const std::string& message) override;
+  void serve_outputs() override;
   bool any(bool flag) override { return coll_.min(flag ? 0 : 1) == 0; }
   /// Logs each process's time on its own work, waiting for the others in the step's
   /// reductions (the work's imbalance) and in the exchanges.
@@ -37,9 +44,18 @@ class DistributedStepper final : public RunStepper {
   const DistributedSimulation& simulation() const { return sim_; }
 
  private:
+  class Reads;
+  // The outputs' reads of the particles, on every process (collective): process 0 passes the
+  // outputs' arguments and gets the results, the others serve.
+  GlobalMeasures measure_all();
+  void sample_all(std::span<const Vec3d> points, std::span<ShepardValue> values);
+  std::uint64_t count_all(ParticleSelection which);
+  void pieces_all(ParticleSelection which, const std::function<void(const ParticleSet&)>& take);
+
   Collectives& coll_;
   DistributedSimulation sim_;
   std::unique_ptr<Simulation> view_;  // process 0 only
+  std::unique_ptr<Reads> reads_;      // process 0 only
 };
 
 }  // namespace netsph

@@ -57,6 +57,7 @@ void ParticleExchange::set_owned(std::uint32_t id, bool on) {
 
 void ParticleExchange::unpack(const Bytes& bytes, ParticleSet& p) {
   const std::size_t n = bytes.size() / sizeof(PackedParticle);
+  p.reserve_more(n);
   for (std::size_t k = 0; k < n; ++k) {
     PackedParticle q;
     std::memcpy(&q, bytes.data() + k * sizeof q, sizeof q);
@@ -66,11 +67,11 @@ void ParticleExchange::unpack(const Bytes& bytes, ParticleSet& p) {
   }
 }
 
-Bytes ParticleExchange::pack_owned(const ParticleSet& p) const {
+Bytes ParticleExchange::pack_owned(const ParticleSet& p, std::span<const std::uint8_t> keep) const {
   Bytes out;
-  out.reserve(owned_count_ * sizeof(PackedParticle));
+  if (keep.empty()) out.reserve(owned_count_ * sizeof(PackedParticle));
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (owned(p.id[i])) pack(out, p, i);
+    if (owned(p.id[i]) && (keep.empty() || keep[i])) pack(out, p, i);
   return out;
 }
 

@@ -7,6 +7,7 @@
 // still the other process's particle (its owner sends it), so no particle is ever doubled
 // or dropped by a round-off difference between two copies.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "netsph/distributed/collectives.hpp"
@@ -45,8 +46,9 @@ class ParticleExchange {
   /// Makes particle `id` this process's own, or no longer (a particle created or removed by
   /// the open boundaries).
   void set_owned(std::uint32_t id, bool on);
-  /// This process's own particles, packed (for a gather).
-  Bytes pack_owned(const ParticleSet& p) const;
+  /// This process's own particles (those with keep[i] != 0 when `keep` is given), packed (for
+  /// a gather).
+  Bytes pack_owned(const ParticleSet& p, std::span<const std::uint8_t> keep = {}) const;
   /// Appends packed particles to `p`.
   static void unpack(const Bytes& bytes, ParticleSet& p);
 

@@ -7,7 +7,9 @@
 // keeps its previous checkpoint.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,9 +29,29 @@ struct CheckpointData {
   std::string source;  ///< the file it was read from (for messages)
 };
 
+/// Arrays that come in pieces (a distributed run's particles, one process's at a time): the
+/// function calls `add` with each piece's arrays, every piece naming the same ones (no texts).
+using CheckpointPieces =
+    std::function<void(const std::function<void(const CheckpointData& piece)>& add)>;
+
 /// Throws netsph::Error naming the file on failure; the previous file at `path` survives it.
-void write_checkpoint_file(const std::filesystem::path& path, const CheckpointData& data);
+/// With `pieces`, the file also holds each of their arrays as the pieces' concatenation, as if
+/// `data` had held it whole.
+void write_checkpoint_file(const std::filesystem::path& path, const CheckpointData& data,
+                           const CheckpointPieces& pieces = {});
 /// Throws netsph::Error naming the file when it cannot be read or is not a checkpoint.
 CheckpointData read_checkpoint_file(const std::filesystem::path& path);
+
+/// Some rows of arrays that hold one row per item (a distributed process's particles): row r
+/// of every array named in `arrays` is read when keep() accepts row r of the first, an f64
+/// array of `key_width` values per row.
+struct CheckpointRows {
+  std::vector<std::string> arrays;
+  std::size_t key_width = 1;
+  std::function<bool(std::span<const double> key_row)> keep;
+};
+/// read_checkpoint_file with only the selected rows of rows.arrays (read in blocks: the
+/// others never reach memory); the other arrays whole.
+CheckpointData read_checkpoint_file(const std::filesystem::path& path, const CheckpointRows& rows);
 
 }  // namespace netsph

@@ -72,24 +72,37 @@ h5::Handle contiguous_layout(const fs::path& path) {
   return dcpl;
 }
 
-void write_dataset(hid_t file, hid_t dcpl, const FieldSpec& f, std::size_t n, const void* data,
-                   const fs::path& path) {
-  const std::string what = std::string("cannot write dataset /") + f.name;
+// Creates dataset `f` for n particles (written in pieces by write_rows).
+h5::Handle create_dataset(hid_t file, hid_t dcpl, const FieldSpec& f, std::size_t n,
+                          const fs::path& path) {
+  const std::string what = std::string("cannot create dataset /") + f.name;
   const std::array<hsize_t, 2> dims = {n, static_cast<hsize_t>(f.components)};
   h5::Handle space(
       check_id(H5Screate_simple(f.components == 1 ? 1 : 2, dims.data(), nullptr), path, what),
       H5Sclose);
-  h5::Handle dset(
+  return h5::Handle(
       check_id(H5Dcreate2(file, f.name, file_type(f), space.get(), H5P_DEFAULT, dcpl, H5P_DEFAULT),
                path, what),
       H5Dclose);
-  // An empty span may have a null data(), which H5Dwrite rejects; an empty dataset is
-  // complete once created.
-  if (n > 0) {
-    check_status(H5Dwrite(dset.get(), memory_type(f), H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
-                 what);
-  }
-  check_status(dset.close(), path, what);
+}
+
+// Writes rows [at, at + m) of dataset `f` from `data` (m rows of the caller's memory).
+void write_rows(hid_t dset, const FieldSpec& f, std::size_t at, std::size_t m, const void* data,
+                const fs::path& path) {
+  // An empty span may have a null data(), which H5Dwrite rejects; nothing to write anyway.
+  if (m == 0) return;
+  const std::string what = std::string("cannot write dataset /") + f.name;
+  const int rank = f.components == 1 ? 1 : 2;
+  const std::array<hsize_t, 2> start = {at, 0}, count = {m, static_cast<hsize_t>(f.components)};
+  h5::Handle file_space(check_id(H5Dget_space(dset), path, what), H5Sclose);
+  check_status(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
+                                   count.data(), nullptr),
+               path, what);
+  h5::Handle memory_space(check_id(H5Screate_simple(rank, count.data(), nullptr), path, what),
+                          H5Sclose);
+  check_status(
+      H5Dwrite(dset, memory_type(f), memory_space.get(), file_space.get(), H5P_DEFAULT, data), path,
+      what);
 }
 
 void write_scalar_attribute(hid_t file, const char* name, hid_t ftype, hid_t mtype,
@@ -114,44 +127,6 @@ std::size_t particle_count(const SnapshotFields& s, const fs::path& dir) {
                             s.kind.size(), s.id.size()));
   }
   return n;
-}
-
-// Writes the datasets and attributes of one snapshot into the open `file`.
-void fill_h5(hid_t file, const fs::path& path, const SnapshotFields& s, std::size_t n) {
-  // ParaView needs explicit Polyvertex connectivity (see the header); it is the one field
-  // that is not in the caller's memory already.
-  std::vector<std::int64_t> connectivity(n);
-  std::iota(connectivity.begin(), connectivity.end(), std::int64_t{0});
-  const std::array<const void*, kFields.size()> data = {
-      connectivity.data(), s.position.data(), s.velocity.data(), s.density.data(),
-      s.pressure.data(),   s.kind.data(),     s.id.data()};
-
-  const h5::Handle dcpl = contiguous_layout(path);
-  for (std::size_t i = 0; i < kFields.size(); ++i) {
-    write_dataset(file, dcpl.get(), kFields[i], n, data[i], path);
-  }
-  write_scalar_attribute(file, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &s.time, path);
-  write_scalar_attribute(file, "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &s.step, path);
-}
-
-// Writes one complete snapshot file, or throws and leaves no file behind.
-void write_h5(const fs::path& path, const SnapshotFields& s, std::size_t n) {
-  h5::Handle file(check_id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), path,
-                           "cannot create the HDF5 file"),
-                  H5Fclose);
-  // From here on the file is ours: a half-written one would only mislead whoever opens the
-  // folder later, so it is removed on failure. (Before H5Fcreate succeeded, whatever is
-  // at `path` is someone else's and stays.)
-  try {
-    fill_h5(file.get(), path, s, n);
-    // Closing flushes the file: a full disk shows up here, so the status is checked.
-    check_status(file.close(), path, "cannot close the HDF5 file");
-  } catch (...) {
-    file.close();
-    std::error_code ignored;
-    fs::remove(path, ignored);
-    throw;
-  }
 }
 
 // The base name becomes part of file names and of "file.h5:/dataset" references in the
@@ -259,18 +234,98 @@ std::filesystem::path SnapshotWriter::xdmf_path() const {
 }
 
 std::filesystem::path SnapshotWriter::write(const SnapshotFields& fields) {
-  const std::size_t n = particle_count(fields, dir_);
-  const std::string relative = fmt::format("snapshots/{}_{:06d}.h5", base_, entries_.size());
-  const fs::path path = dir_ / relative;
+  SnapshotPieces pieces = begin(fields.time, fields.step, particle_count(fields, dir_));
+  pieces.append(fields);
+  return pieces.finish();
+}
+
+struct SnapshotPieces::Impl {
+  SnapshotWriter* writer = nullptr;
+  std::string relative;  // of the .h5 file, from the writer's folder
+  fs::path path;
+  double time = 0;
+  std::int64_t step = 0;
+  std::size_t n = 0, at = 0;  // particles in all, and written so far
+  h5::Handle file;
+  std::array<h5::Handle, kFields.size()> datasets;
+  bool finished = false;
+
+  ~Impl() {
+    if (finished || !file.valid()) return;
+    // From H5Fcreate on the file is ours: a half-written one would only mislead whoever opens
+    // the folder later. (Before it succeeded, whatever is at `path` is someone else's.)
+    for (h5::Handle& d : datasets) d.close();
+    file.close();
+    std::error_code ignored;
+    fs::remove(path, ignored);
+  }
+};
+
+SnapshotPieces::SnapshotPieces(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+SnapshotPieces::SnapshotPieces(SnapshotPieces&&) noexcept = default;
+SnapshotPieces::~SnapshotPieces() = default;
+
+SnapshotPieces SnapshotWriter::begin(double time, std::int64_t step, std::size_t n) {
+  const h5::SilenceErrors silence;
+  auto impl = std::make_unique<SnapshotPieces::Impl>();
+  impl->writer = this;
+  impl->relative = fmt::format("snapshots/{}_{:06d}.h5", base_, entries_.size());
+  impl->path = dir_ / impl->relative;
+  impl->time = time, impl->step = step, impl->n = n;
+  const fs::path& path = impl->path;
+  impl->file = h5::Handle(check_id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                                   path, "cannot create the HDF5 file"),
+                          H5Fclose);
+  const h5::Handle dcpl = contiguous_layout(path);
+  for (std::size_t i = 0; i < kFields.size(); ++i)
+    impl->datasets[i] = create_dataset(impl->file.get(), dcpl.get(), kFields[i], n, path);
+  write_scalar_attribute(impl->file.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
+  write_scalar_attribute(impl->file.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step, path);
+  return SnapshotPieces(std::move(impl));
+}
+
+void SnapshotPieces::append(const SnapshotFields& s) {
+  Impl& w = *impl_;
+  const std::size_t m = particle_count(s, w.path);
+  if (w.at + m > w.n) {
+    throw Error(w.path.string(), fmt::format("snapshot pieces hold more than the {} particles "
+                                             "announced",
+                                             w.n));
+  }
+  const h5::SilenceErrors silence;
+  // ParaView needs explicit Polyvertex connectivity (see the header); it is the one field
+  // that is not in the caller's memory already.
+  std::vector<std::int64_t> connectivity(m);
+  std::iota(connectivity.begin(), connectivity.end(), static_cast<std::int64_t>(w.at));
+  const std::array<const void*, kFields.size()> data = {
+      connectivity.data(), s.position.data(), s.velocity.data(), s.density.data(),
+      s.pressure.data(),   s.kind.data(),     s.id.data()};
+  for (std::size_t i = 0; i < kFields.size(); ++i)
+    write_rows(w.datasets[i].get(), kFields[i], w.at, m, data[i], w.path);
+  w.at += m;
+}
+
+std::filesystem::path SnapshotPieces::finish() {
+  Impl& w = *impl_;
+  if (w.at != w.n) {
+    throw Error(w.path.string(),
+                fmt::format("snapshot pieces hold {} particles, {} were announced", w.at, w.n));
+  }
   {
     const h5::SilenceErrors silence;
-    write_h5(path, fields, n);
+    for (std::size_t i = 0; i < kFields.size(); ++i) {
+      check_status(w.datasets[i].close(), w.path,
+                   std::string("cannot write dataset /") + kFields[i].name);
+    }
+    // Closing flushes the file: a full disk shows up here, so the status is checked.
+    check_status(w.file.close(), w.path, "cannot close the HDF5 file");
   }
+  w.finished = true;
   // The snapshot is complete on disk, so it is listed even if the XDMF rewrite below fails:
   // the next successful rewrite then includes it.
-  entries_.push_back({relative, fields.time, fields.step, n});
-  rewrite_xdmf();
-  return path;
+  w.writer->entries_.push_back({w.relative, w.time, w.step, w.n});
+  w.writer->rewrite_xdmf();
+  return w.path;
 }
 
 void SnapshotWriter::rewrite_xdmf() const {

@@ -7,6 +7,7 @@
 // cells from an implicit one (shared/notes/debian-stack.md, section 2c).
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -27,6 +28,29 @@ struct SnapshotFields {
   std::span<const std::uint32_t> id;   ///< unique particle id
 };
 
+class SnapshotWriter;
+
+/// One snapshot written in pieces (a distributed run's processes' particles, in turn):
+/// SnapshotWriter::begin() with the total count, append() every piece, finish(). Destroyed
+/// unfinished (an error on the way), it removes its file: no half-written snapshot is left.
+class SnapshotPieces {
+ public:
+  SnapshotPieces(SnapshotPieces&&) noexcept;
+  ~SnapshotPieces();
+  /// Writes the next piece's particles (its time and step are ignored). Throws netsph::Error
+  /// on I/O failure, or when the pieces hold more particles than begin() was told.
+  void append(const SnapshotFields& piece);
+  /// Closes the file and lists it in the XDMF file; throws netsph::Error when the pieces held
+  /// fewer particles than begin() was told. Returns the path of the .h5 file.
+  std::filesystem::path finish();
+
+ private:
+  friend class SnapshotWriter;
+  struct Impl;
+  explicit SnapshotPieces(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
 class SnapshotWriter {
  public:
   /// Creates <dir>/snapshots/ if needed and removes <base>_*.h5 files a previous run left
@@ -38,6 +62,8 @@ class SnapshotWriter {
   /// Writes <dir>/snapshots/<base>_NNNNNN.h5 (NNNNNN = snapshot index from 0) and rewrites
   /// <dir>/<base>.xdmf. Returns the path of the .h5 file. Throws netsph::Error on I/O failure.
   std::filesystem::path write(const SnapshotFields& fields);
+  /// The same snapshot file, written in pieces: `n` particles in all at `time`, `step`.
+  SnapshotPieces begin(double time, std::int64_t step, std::size_t n);
 
   /// A restarted run: takes over the snapshots its checkpoint lists (one line each,
   /// "<relative .h5 path> <time> <step> <count>", as entries_text() gives them), keeps their
@@ -52,6 +78,7 @@ class SnapshotWriter {
   std::filesystem::path xdmf_path() const;
 
  private:
+  friend class SnapshotPieces;
   struct Entry {
     std::string h5_relative;  // path of the .h5 relative to dir_
     double time;

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "netsph/backend/cpu/probe_pass.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/solver/run_outputs.hpp"
 
@@ -71,15 +70,7 @@ ProbeRecorder::ProbeRecorder(const Simulation& sim, const std::filesystem::path&
 
 ProbeRecorder::~ProbeRecorder() = default;
 
-bool ProbeRecorder::reads_particles(double time) const {
-  const double t = time * (1 + 1e-12);
-  if (t >= next_sample_ && time >= t0_ && time <= t1_) return !probes_.empty();
-  for (const auto& pr : probes_)
-    if (t >= pr->next_write) return true;
-  return false;
-}
-
-void ProbeRecorder::after_step(const Simulation& sim) {
+void ProbeRecorder::after_step(const Simulation& sim, OutputParticles& particles) {
   if (probes_.empty()) return;
   const double t = sim.time() * (1 + 1e-12);
   const bool sample = t >= next_sample_;
@@ -90,9 +81,7 @@ void ProbeRecorder::after_step(const Simulation& sim) {
   for (auto& pr : probes_) {
     const bool write = t >= pr->next_write;
     if (!write && !in_window) continue;
-    // The grid is the one sorted at the start of the last step: its cells are searched with a
-    // skin that covers the particles' motion over a step (neighbors/cell_grid.hpp).
-    sample_points(sim.model(), sim.grid(), sim.particles(), pr->points, pr->values);
+    particles.sample(pr->points, pr->values);
     if (in_window) {
       for (std::size_t k = 0; k < pr->points.size(); ++k) {
         const ShepardValue& v = pr->values[k];

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "netsph/io/csv_series.hpp"
+#include "netsph/solver/output_particles.hpp"
 #include "netsph/solver/simulation.hpp"
 #include "netsph/sph/shepard.hpp"
 
@@ -40,10 +41,9 @@ class ProbeRecorder {
   ~ProbeRecorder();
 
   bool empty() const { return probes_.empty(); }
-  /// Samples the probes whose interval has come (always at t = 0).
-  void after_step(const Simulation& sim);
-  /// Whether after_step at `time` reads the particles (a distributed run gathers them then).
-  bool reads_particles(double time) const;
+  /// Samples the probes whose interval has come (always at t = 0) from `particles`
+  /// (output_particles.hpp).
+  void after_step(const Simulation& sim, OutputParticles& particles);
   /// Writes probes/<name>_mean.csv.
   void write_means() const;
   /// Per probe: type, points, files, samples averaged; point probes: the mean velocity; with a

@@ -24,37 +24,6 @@ std::array<double, 2> force_window(const CaseSpec& spec) {
   return {0.5 * spec.simulation.end_time, spec.simulation.end_time};
 }
 
-GlobalMeasures measure(const Simulation& sim) {
-  const ParticleSet& p = sim.particles();
-  const double mass = sim.model().mass;
-  GlobalMeasures g;
-  double ke = 0, vmax2 = 0, rmin = std::numeric_limits<double>::infinity(), rmax = -rmin;
-  std::size_t nf = 0, nw = 0, nb = 0;
-  const auto n = static_cast<std::int64_t>(p.size());
-#pragma omp parallel for reduction(+ : ke, nf, nw, nb) reduction(max : vmax2, rmax) \
-    reduction(min : rmin)
-  for (std::int64_t i = 0; i < n; ++i) {
-    nw += p.kind[i] == ParticleKind::Wall;
-    nb += p.kind[i] == ParticleKind::Buffer;
-    if (!is_fluid(p.kind[i])) continue;
-    const double v2 = norm2(Vec3d(p.vel[i]));
-    ke += 0.5 * mass * v2;
-    vmax2 = std::max(vmax2, v2);
-    rmin = std::min(rmin, static_cast<double>(p.rho[i]));
-    rmax = std::max(rmax, static_cast<double>(p.rho[i]));
-    ++nf;
-  }
-  g.fluid = nf;
-  g.walls = nw;
-  g.buffer = nb;
-  g.kinetic_energy = ke;
-  g.fluid_mass = mass * static_cast<double>(nf);
-  g.max_speed = std::sqrt(vmax2);
-  g.min_density = nf ? rmin : 0;
-  g.max_density = nf ? rmax : 0;
-  return g;
-}
-
 namespace {
 std::vector<CsvColumn> series_columns(int dims) {
   const std::string per = dims == 2 ? "/m" : "";
@@ -166,51 +135,24 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
   }
 }
 
-bool in_snapshot_region(const CaseSpec& spec, const Vec3d& x) {
-  const auto& r = spec.output.snapshot_region;
-  if (!r) return true;
-  const bool y = spec.simulation.dimensions == 2 || (x.y >= r->min.y && x.y <= r->max.y);
-  return x.x >= r->min.x && x.x <= r->max.x && x.z >= r->min.z && x.z <= r->max.z && y;
-}
-
-std::size_t snapshot_particle_count(const Simulation& sim) {
-  const ParticleSet& p = sim.particles();
-  if (!sim.spec().output.snapshot_region) return p.size();
-  std::size_t n = 0;
-  for (const Vec3d& x : p.pos) n += in_snapshot_region(sim.spec(), x);
-  return n;
-}
-
-void RunOutputs::write_snapshot(const Simulation& sim) {
-  const ParticleSet& p = sim.particles();
-  const std::vector<float> press = sim.pressures();
-  SnapshotFields f;
-  f.time = sim.time();
-  f.step = sim.steps();
-  // Inside output.snapshot_region only: the particles' fields gathered into a set of their own.
-  ParticleSet region;
-  std::vector<float> region_press;
-  const ParticleSet* q = &p;
-  const std::vector<float>* qp = &press;
-  if (sim.spec().output.snapshot_region) {
-    std::vector<std::uint32_t> inside;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (in_snapshot_region(sim.spec(), p.pos[i])) inside.push_back(static_cast<std::uint32_t>(i));
-    const auto gather = [&](auto& out, const auto& in) {
-      out.resize(inside.size());
-      for (std::size_t k = 0; k < inside.size(); ++k) out[k] = in[inside[k]];
-    };
-    gather(region.pos, p.pos), gather(region.vel, p.vel), gather(region.rho, p.rho);
-    gather(region.kind, p.kind), gather(region.id, p.id), gather(region_press, press);
-    q = &region, qp = &region_press;
-  }
-  f.position = q->pos;
-  f.velocity = q->vel;
-  f.density = q->rho;
-  f.pressure = *qp;
-  f.kind = {reinterpret_cast<const std::uint8_t*>(q->kind.data()), q->kind.size()};
-  f.id = q->id;
-  snapshots_->write(f);
+void RunOutputs::write_snapshot(const Simulation& sim, OutputParticles& particles) {
+  SnapshotPieces out =
+      snapshots_->begin(sim.time(), sim.steps(), particles.count(ParticleSelection::Snapshot));
+  const TaitEos& eos = sim.model().eos;
+  std::vector<float> pressure;
+  particles.pieces(ParticleSelection::Snapshot, [&](const ParticleSet& q) {
+    pressure.resize(q.size());
+    for (std::size_t i = 0; i < q.size(); ++i) pressure[i] = eos.pressure(q.rho[i]);
+    SnapshotFields f;
+    f.position = q.pos;
+    f.velocity = q.vel;
+    f.density = q.rho;
+    f.pressure = pressure;
+    f.kind = {reinterpret_cast<const std::uint8_t*>(q.kind.data()), q.kind.size()};
+    f.id = q.id;
+    out.append(f);
+  });
+  out.finish();
   last_snapshot_step_ = sim.steps();
   write_net_files(sim, false);
 }
@@ -232,8 +174,9 @@ void RunOutputs::write_net_files(const Simulation& sim, bool final) {
   }
 }
 
-void RunOutputs::write_series_row(const Simulation& sim, double wall_s) {
-  const GlobalMeasures g = measure(sim);
+void RunOutputs::write_series_row(const Simulation& sim, OutputParticles& particles,
+                                  double wall_s) {
+  const GlobalMeasures g = particles.measure();
   const auto& d = sim.diagnostics();
   std::vector<double> row = {sim.time(),
                              sim.steps() > 0 ? sim.last_dt() : 0.0,
@@ -262,28 +205,22 @@ void RunOutputs::write_series_row(const Simulation& sim, double wall_s) {
   last_series_step_ = sim.steps();
 }
 
-void RunOutputs::maybe_write(const Simulation& sim, double wall_s) {
+void RunOutputs::maybe_write(const Simulation& sim, OutputParticles& particles, double wall_s) {
   // A small tolerance so that round-off in the accumulated time does not skip an output.
   const double t = sim.time() * (1 + 1e-12);
   if (snapshots_ && t >= next_snapshot_) {
-    write_snapshot(sim);
+    write_snapshot(sim, particles);
     while (next_snapshot_ <= t) next_snapshot_ += snapshot_every_;
   }
   if (t >= next_series_) {
-    write_series_row(sim, wall_s);
+    write_series_row(sim, particles, wall_s);
     while (next_series_ <= t) next_series_ += series_every_;
   }
 }
 
-bool RunOutputs::reads_particles(const Simulation& sim) const {
-  const double t = sim.time() * (1 + 1e-12);  // as maybe_write
-  return (snapshots_ && t >= next_snapshot_) || t >= next_series_ ||
-         probes_.reads_particles(sim.time());
-}
-
-void RunOutputs::write_final(const Simulation& sim, double wall_s) {
-  if (snapshots_ && last_snapshot_step_ != sim.steps()) write_snapshot(sim);
-  if (last_series_step_ != sim.steps()) write_series_row(sim, wall_s);
+void RunOutputs::write_final(const Simulation& sim, OutputParticles& particles, double wall_s) {
+  if (snapshots_ && last_snapshot_step_ != sim.steps()) write_snapshot(sim, particles);
+  if (last_series_step_ != sim.steps()) write_series_row(sim, particles, wall_s);
   write_net_files(sim, true);
   probes_.write_means();
 }

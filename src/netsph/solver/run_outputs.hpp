@@ -18,26 +18,11 @@
 #include "netsph/net/net_xdmf.hpp"
 #include "netsph/solver/body_forces.hpp"
 #include "netsph/solver/net_records.hpp"
+#include "netsph/solver/output_particles.hpp"
 #include "netsph/solver/probes.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph {
-
-/// Global quantities of the current state (double sums, fluid particles only unless noted).
-struct GlobalMeasures {
-  std::size_t fluid = 0, walls = 0, buffer = 0;
-  double kinetic_energy = 0;                ///< J (J/m in 2D)
-  double fluid_mass = 0;                    ///< kg (kg/m in 2D)
-  double max_speed = 0;                     ///< m/s
-  double min_density = 0, max_density = 0;  ///< kg/m^3
-};
-
-GlobalMeasures measure(const Simulation& sim);
-
-/// Whether a particle at x goes into the snapshots (inside output.snapshot_region, or all).
-bool in_snapshot_region(const CaseSpec& spec, const Vec3d& x);
-/// How many of the present particles a snapshot would hold.
-std::size_t snapshot_particle_count(const Simulation& sim);
 
 class RunOutputs {
  public:
@@ -46,18 +31,18 @@ class RunOutputs {
   RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots,
              const CheckpointData* resume = nullptr);
 
+  // `sim` gives the run's time, bodies and nets; `particles` what the outputs read of its
+  // particles (output_particles.hpp).
+
   /// Writes a snapshot and/or a series row when their interval has come (always at t = 0).
-  void maybe_write(const Simulation& sim, double wall_s);
-  /// Whether after_step and maybe_write at the simulation's present time read its particles
-  /// (a distributed run gathers them on process 0 only then).
-  bool reads_particles(const Simulation& sim) const;
+  void maybe_write(const Simulation& sim, OutputParticles& particles, double wall_s);
   /// Writes the final snapshot and series row unless this exact step was written already.
-  void write_final(const Simulation& sim, double wall_s);
+  void write_final(const Simulation& sim, OutputParticles& particles, double wall_s);
   /// Called after every step: time averages of body forces, probe samples.
-  void after_step(const Simulation& sim) {
+  void after_step(const Simulation& sim, OutputParticles& particles) {
     forces_.accumulate(sim);
     nets_.accumulate(sim);
-    probes_.after_step(sim);
+    probes_.after_step(sim, particles);
   }
   /// Body force averages for summary.json (an empty array without bodies).
   nlohmann::json body_summary() const { return forces_.summary(); }
@@ -74,9 +59,9 @@ class RunOutputs {
   const std::filesystem::path& dir() const { return dir_; }
 
  private:
-  void write_snapshot(const Simulation& sim);
+  void write_snapshot(const Simulation& sim, OutputParticles& particles);
   void write_net_files(const Simulation& sim, bool final);
-  void write_series_row(const Simulation& sim, double wall_s);
+  void write_series_row(const Simulation& sim, OutputParticles& particles, double wall_s);
   void restore_state(const Simulation& sim, const CheckpointData& c);
 
   std::filesystem::path dir_;

@@ -1,10 +1,13 @@
 #pragma once
 // What run_simulation advances and what its outputs read. One process: the Simulation itself
 // (SingleStepper). A distributed run (distributed/distributed_stepper.hpp): every process
-// steps its part, and process 0 holds a whole Simulation of the case, the view, which
-// refresh_view() brings up to date before the outputs read it.
+// steps its part; process 0 holds a Simulation of the case without particles, the view, whose
+// time, bodies and nets refresh_view() brings up to date, and reads the particles through
+// particles(), operations in which the other processes take part (serve_outputs()).
 #include <cstdint>
+#include <string>
 
+#include "netsph/solver/output_particles.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph {
@@ -24,13 +27,21 @@ class RunStepper {
   /// Processes stepping the run.
   virtual int processes() const { return 1; }
 
-  /// The state the outputs read, on the process that writes them; null on the others.
+  /// The state the outputs read (time, bodies, nets, diagnostics), on the process that writes
+  /// them; null on the others.
   virtual const Simulation* view() const = 0;
-  /// Brings the view to the present time, bodies and nets; with `particles` also its particles
-  /// (collective: every process calls it with the same flag).
-  virtual void refresh_view(bool particles) = 0;
-  /// Process 0's flag on every process.
-  virtual bool from_view_process(bool flag) { return flag; }
+  /// Brings the view to the present time, bodies, nets and diagnostics (no communication).
+  virtual void refresh_view() = 0;
+  /// What the outputs read of the run's particles, on the view's process.
+  virtual OutputParticles& particles() = 0;
+  /// On the view's process, once its outputs of this point of the run are written: releases
+  /// the others from serve_outputs().
+  virtual void outputs_written() {}
+  /// On the view's process, when an output failed with `message`: the others stop too.
+  virtual void outputs_failed(const std::string& /*message*/) {}
+  /// On the other processes meanwhile: take part in the view's reads of the particles until
+  /// it is done; throws netsph::Error with its message when its outputs failed.
+  virtual void serve_outputs() {}
   /// True on every process when true on any (a stop request).
   virtual bool any(bool flag) { return flag; }
   /// At the end of the run (collective): report what only the stepper knows.
@@ -40,7 +51,7 @@ class RunStepper {
 /// One process: the simulation is its own view.
 class SingleStepper final : public RunStepper {
  public:
-  explicit SingleStepper(Simulation& sim) : sim_(sim) {}
+  explicit SingleStepper(Simulation& sim) : sim_(sim), particles_(sim) {}
   const CaseSpec& spec() const override { return sim_.spec(); }
   void step() override { sim_.step(); }
   double time() const override { return sim_.time(); }
@@ -48,10 +59,12 @@ class SingleStepper final : public RunStepper {
   std::uint64_t particle_count() const override { return sim_.particle_count(); }
   double bytes_per_particle() const override { return sim_.bytes_per_particle(); }
   const Simulation* view() const override { return &sim_; }
-  void refresh_view(bool) override {}
+  void refresh_view() override {}
+  OutputParticles& particles() override { return particles_; }
 
  private:
   Simulation& sim_;
+  SimulationParticles particles_;
 };
 
 }  // namespace netsph

@@ -45,10 +45,9 @@ std::vector<std::string> collect_warnings(const Simulation& sim) {
   return w;
 }
 
-nlohmann::json summary_json(const Simulation& sim, const RunReport& r, const RunOptions& opt,
-                            const RunOutputs& outputs, int processes) {
+nlohmann::json summary_json(const Simulation& sim, const GlobalMeasures& g, const RunReport& r,
+                            const RunOptions& opt, const RunOutputs& outputs, int processes) {
   const CaseSpec& s = sim.spec();
-  const GlobalMeasures g = measure(sim);
   nlohmann::json j;
   j["netsph_version"] = NETSPH_VERSION;
   j["case"] = {{"name", s.simulation.name}, {"source", s.source}, {"overrides", s.overrides}};
@@ -129,28 +128,46 @@ RunReport run_simulation(Simulation& sim, const RunOptions& opt) {
 
 RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   // The process that holds the view writes the outputs (the only process, without MPI); the
-  // others step and take part when the view gathers particles. Every decision that changes the
-  // course of the loop is the same on every process: the time, step count and dt are global,
-  // stop requests are combined, and process 0 says when the outputs need particles.
+  // others step and take part in the outputs' reads of the particles (write_outputs below).
+  // Every decision that changes the course of the loop is the same on every process: the
+  // time, step count and dt are global, and stop requests are combined.
   const CaseSpec& spec = stepper.spec();
   const double end = spec.simulation.end_time;
   const double start_time = stepper.time();
-  stepper.refresh_view(true);
+  stepper.refresh_view();
   const Simulation* view = stepper.view();
   std::optional<RunOutputs> outputs;
   if (view) outputs.emplace(*view, opt.out_dir, spec.output.snapshots, opt.resume);
+  // The outputs of one point of the run. When they fail on the view's process, the others
+  // stop with its message rather than wait for it in their next step.
+  const auto write_outputs = [&stepper, view](const auto& write) {
+    if (!view) return stepper.serve_outputs();
+    try {
+      write(stepper.particles());
+    } catch (const std::exception& e) {
+      stepper.outputs_failed(e.what());
+      throw;
+    }
+    stepper.outputs_written();
+  };
   // Checkpoints every checkpoint_every seconds of simulated time (default: a tenth of the
   // run) and at the end, so that a run that dies loses at most that much.
   const double checkpoint_every =
       spec.output.checkpoint_every > 0 ? spec.output.checkpoint_every : end / 10;
   double next_checkpoint = stepper.time() + checkpoint_every;
   double checkpoint_time = -1;
-  const auto write_checkpoint = [&] {
-    if (!view) return;
+  const auto write_checkpoint = [&](OutputParticles& particles) {
     CheckpointData c = opt.case_record;
-    view->save_state(c);
+    view->save_global_state(c);
     outputs->save_state(c);
-    write_checkpoint_file(checkpoint_path(opt.out_dir), c);
+    // The particles' arrays from each process in turn.
+    write_checkpoint_file(checkpoint_path(opt.out_dir), c, [&particles](const auto& add) {
+      particles.pieces(ParticleSelection::All, [&add](const ParticleSet& piece) {
+        CheckpointData arrays;
+        Simulation::particle_state(piece, arrays);
+        add(arrays);
+      });
+    });
     checkpoint_time = view->time();
   };
   const bool show_progress = opt.progress && view;
@@ -163,7 +180,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   RunReport r;
   double particle_steps = 0;
   bool warned_lost = false;
-  if (!opt.resume && view) outputs->maybe_write(*view, 0.0);
+  if (!opt.resume) write_outputs([&](OutputParticles& p) { outputs->maybe_write(*view, p, 0.0); });
   try {
     while (stepper.time() < end * (1 - 1e-12)) {
       if (opt.max_steps > 0 && stepper.steps() >= opt.max_steps) {
@@ -180,11 +197,9 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
       stepper.step();
       const bool checkpoint_due =
           stepper.time() >= next_checkpoint * (1 - 1e-12) && stepper.time() < end * (1 - 1e-12);
-      stepper.refresh_view(false);
-      if (stepper.from_view_process(view && (checkpoint_due || outputs->reads_particles(*view))))
-        stepper.refresh_view(true);
-      if (view) {
-        outputs->after_step(*view);
+      stepper.refresh_view();
+      write_outputs([&](OutputParticles& p) {
+        outputs->after_step(*view, p);
         if (view->diagnostics().lost_total > 0 && !warned_lost) {
           spdlog::warn(
               "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
@@ -192,10 +207,10 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
               view->time());
           warned_lost = true;
         }
-        outputs->maybe_write(*view, wall());
-      }
+        outputs->maybe_write(*view, p, wall());
+        if (checkpoint_due) write_checkpoint(p);
+      });
       if (checkpoint_due) {
-        write_checkpoint();
         while (next_checkpoint <= stepper.time() * (1 + 1e-12)) next_checkpoint += checkpoint_every;
       }
       if (show_progress) progress.update(stepper.time(), stepper.steps(), stepper.particle_count());
@@ -212,20 +227,24 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   r.sim_time = stepper.time();
   r.particle_steps_per_s = r.wall_s > 0 ? particle_steps / r.wall_s : 0;
   r.bytes_per_particle = stepper.bytes_per_particle();
-  stepper.refresh_view(true);
+  stepper.refresh_view();
   stepper.finish();
+  GlobalMeasures final_state;
+  write_outputs([&](OutputParticles& p) {
+    r.warnings = collect_warnings(*view);
+    try {
+      outputs->write_final(*view, p, r.wall_s);
+      // The state of an unstable run is broken: its last good checkpoint stays.
+      if (r.status != "unstable") write_checkpoint(p);
+    } catch (const Error& e) {
+      r.warnings.push_back(std::string("final output failed: ") + e.what());
+    }
+    final_state = p.measure();
+  });
   if (!view) return r;
-  r.warnings = collect_warnings(*view);
-  try {
-    outputs->write_final(*view, r.wall_s);
-    // The state of an unstable run is broken: its last good checkpoint stays.
-    if (r.status != "unstable") write_checkpoint();
-  } catch (const Error& e) {
-    r.warnings.push_back(std::string("final output failed: ") + e.what());
-  }
   r.checkpoint_time = checkpoint_time;
   r.snapshots = outputs->snapshots_written();
-  r.summary = summary_json(*view, r, opt, *outputs, stepper.processes());
+  r.summary = summary_json(*view, final_state, r, opt, *outputs, stepper.processes());
   if (opt.resume) r.summary["time"]["restarted_from_s"] = start_time;
   write_file_atomic(opt.out_dir / "summary.json", r.summary.dump(2) + "\n");
   return r;

@@ -230,7 +230,6 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
     scene.sources.push_back({w.name, part.total});
   }
   add_bodies(spec, scene);
-  std::vector<std::size_t> buffer_count(scene.zones.size(), 0);
   for (std::size_t i = 0; i < spec.fills.size(); ++i) {
     const auto& f = spec.fills[i];
     const LatticePart part = fill_box_part(lattice_box(f.box, dims), dp, near);
@@ -249,21 +248,22 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
         const OpenBoundaryZone& zone = scene.zones[static_cast<std::size_t>(z)];
         const Vec3f v = zone.velocity_imposed ? zone.imposed_velocity(x) : Vec3f(f.velocity);
         p.add(x, v, rho, ParticleKind::Buffer, static_cast<std::uint32_t>(z));
-        ++buffer_count[static_cast<std::size_t>(z)];
       }
     }
     p.next_id = first_id + static_cast<std::uint32_t>(part.total);
     scene.sources.push_back({fmt::format("fill{}", i + 1), part.total});
   }
-  for (std::size_t z = 0; z < scene.zones.size(); ++z) {
-    if (buffer_count[z] == 0) {
-      scene.warnings.push_back(
-          fmt::format("{} '{}' starts with no buffer particles: no fill reaches its face",
-                      scene.zones[z].inlet ? "inlet" : "outlet", scene.zones[z].name));
-    }
-    scene.sources.push_back({scene.zones[z].name + " (buffer)", buffer_count[z]});
-  }
-  scene.removed_in_bodies = remove_fluid_in_bodies(spec, scene);
+  // The removals counted in the region only (a part's margin belongs to its neighbours).
+  const auto fluid_in_region = [&p, &region] {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      n += is_fluid(p.kind[i]) && region.contains(p.pos[i]);
+    return n;
+  };
+  const std::size_t fluid_generated = fluid_in_region();
+  remove_fluid_in_bodies(spec, scene);
+  const std::size_t fluid_outside_bodies = fluid_in_region();
+  scene.removed_in_bodies = fluid_generated - fluid_outside_bodies;
   wrap_body_particles(spec, p);
 
   // Bounding box of the particles, for the default domain and the overlap search (of the
@@ -304,7 +304,8 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
 
   if (p.size() > 0) {
     const Vec3d glo = lo - Vec3d(dp, dp, dp), ghi = hi + Vec3d(dp, dp, dp);
-    scene.removed_overlaps = remove_overlaps(p, dp, glo, ghi, dims);
+    remove_overlaps(p, dp, glo, ghi, dims);
+    scene.removed_overlaps = fluid_outside_bodies - fluid_in_region();
   }
   if (!region.everything()) {
     std::vector<char> keep(p.size());
@@ -312,12 +313,45 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
     p.keep_only(keep);
   }
   p.shrink_to_fit();
+  scene.buffer_counts.assign(scene.zones.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == ParticleKind::Buffer) ++scene.buffer_counts[p.group[i]];
+  if (region.everything()) report_particle_counts(scene);
+  return scene;
+}
+
+void report_particle_counts(Scene& scene) {
+  for (std::size_t z = 0; z < scene.zones.size(); ++z) {
+    if (scene.buffer_counts.at(z) == 0) {
+      scene.warnings.push_back(
+          fmt::format("{} '{}' starts with no buffer particles: no fill reaches its face",
+                      scene.zones[z].inlet ? "inlet" : "outlet", scene.zones[z].name));
+    }
+    scene.sources.push_back({scene.zones[z].name + " (buffer)", scene.buffer_counts[z]});
+  }
   if (scene.removed_overlaps > 0) {
     scene.warnings.push_back(fmt::format(
         "{} fluid particles overlapped walls or earlier fills (closer than dp/2) and were removed",
         scene.removed_overlaps));
   }
-  return scene;
+}
+
+Scene Scene::without_particles() const {
+  Scene s;
+  s.particles.next_id = particles.next_id;
+  s.model = model;
+  s.sound_speed = sound_speed;
+  s.fluid_depth = fluid_depth;
+  s.domain_min = domain_min, s.domain_max = domain_max;
+  s.zones = zones;
+  s.bodies = bodies;
+  s.sources = sources;
+  s.removed_overlaps = removed_overlaps;
+  s.removed_in_bodies = removed_in_bodies;
+  s.buffer_counts = buffer_counts;
+  s.thickened_bodies = thickened_bodies;
+  s.warnings = warnings;
+  return s;
 }
 
 }  // namespace netsph

@@ -28,11 +28,22 @@ struct Scene {
   std::vector<OpenBoundaryZone> zones;  ///< inlets, then outlets (buffer particles' group)
   std::vector<RigidBody> bodies;        ///< body particles' group indexes this
   std::vector<SceneSource> sources;
+  // Counts of the particles in the scene (a part's: in its region).
   std::size_t removed_overlaps = 0;   ///< fluid particles dropped for sitting on another particle
   std::size_t removed_in_bodies = 0;  ///< fluid particles dropped for lying inside a body
-  std::size_t thickened_bodies = 0;   ///< bodies resolved thicker than given (2 dp at least)
+  std::vector<std::size_t> buffer_counts;  ///< buffer particles per zone at the start
+  std::size_t thickened_bodies = 0;        ///< bodies resolved thicker than given (2 dp at least)
   std::vector<std::string> warnings;
+
+  /// Everything but the particles (the outputs' view of a distributed run). Copies every
+  /// other member: a member added above must be added there too.
+  Scene without_particles() const;
 };
+
+/// Adds to `scene` the sources and warnings that rest on the counts of its particles (the
+/// buffers' sources, zones without buffer particles, fluid removed for overlapping): for the
+/// whole case, from build_scene's counts or from a distributed run's parts' summed.
+void report_particle_counts(Scene& scene);
 
 /// Builds the particles (walls first, then fills in file order) with hydrostatic density.
 /// Throws netsph::Error naming the case item when something cannot be built.
@@ -48,8 +59,9 @@ using WholeBounds = std::function<void(Vec3d& lo, Vec3d& hi)>;
 /// scene's domain (through `whole_bounds`, called once on every process). The parts of
 /// regions that tile the axis make up build_scene's particles exactly. The fills and walls
 /// are generated only near the region; the bodies' particles (a few surfaces) in full and
-/// then trimmed. `sources` count the whole case's particles as generated; the
-/// removal counts and warnings are those of the part and the margin it is built with.
+/// then trimmed. `sources` count the whole case's walls, fills and bodies as generated; the
+/// counts of removed fluid and buffer particles are those in the region, to be summed over
+/// the parts (report_particle_counts, which a part leaves out).
 Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
                        const WholeBounds& whole_bounds);
 

@@ -144,17 +144,30 @@ class Simulation {
   void set_partition(StepPartition* partition);
   const StepPartition* partition() const { return partition_; }
 
-  /// For a distributed run's outputs: this simulation takes `particles` (every process's own)
+  /// For a distributed run's tests: this simulation takes `particles` (every process's own)
   /// and the time, step count, diagnostics, bodies and nets of `stepped` (one process's
   /// simulation of the same case), and sorts them so that grid() matches.
   void adopt_state(const Simulation& stepped, const StepDiagnostics& diagnostics,
                    ParticleSet&& particles);
-  /// The time, step count, bodies and nets of `stepped` and the run's `diagnostics` only
-  /// (between outputs).
+  /// For a distributed run's outputs: the time, step count, next particle id, bodies and nets
+  /// of `stepped` and the run's `diagnostics`.
   void adopt_global_state(const Simulation& stepped, const StepDiagnostics& diagnostics);
+  /// Sorts the particles by cell as a step does first, so that grid() matches them (one
+  /// process of a distributed run, after particles came and went in its first exchange).
+  void sort_by_cell() { sort_particles(false); }
 
-  /// Adds the state a restart needs to `c` (solver/simulation_checkpoint.cpp).
+  /// Adds the state a restart needs to `c` (solver/simulation_checkpoint.cpp): that of
+  /// save_global_state and the particles' (particle_state).
   void save_state(CheckpointData& c) const;
+  /// Everything a restart needs but the particles' arrays (the time, bodies, nets, the next
+  /// particle id...): a distributed run's checkpoint takes the particles from the processes.
+  void save_global_state(CheckpointData& c) const;
+  /// Adds the arrays of the particles `p` to `c`; the checkpoint's particles are those of
+  /// every call (write_checkpoint_file's pieces) in turn.
+  static void particle_state(const ParticleSet& p, CheckpointData& c);
+  /// The checkpoint's particles in `region` (read_checkpoint_file's rows): what one process
+  /// of a distributed restart reads of the file.
+  static CheckpointRows particle_rows(const AxisRange& region);
   /// Replaces the state with a checkpoint's, written by save_state for the same case; the
   /// steps that follow are then bit for bit those the saved run would have taken. `keep`:
   /// only the particles there (one process's region of a distributed run).

@@ -17,20 +17,39 @@ void put3(std::vector<T>& out, const V& v) {
 
 }  // namespace
 
-void Simulation::save_state(CheckpointData& c) const {
-  sync_from_device();
-  const std::size_t n = p_.size();
+void Simulation::particle_state(const ParticleSet& p, CheckpointData& c) {
+  const std::size_t n = p.size();
   auto& pos = c.f64["particles.pos"];
   auto& vel = c.f32["particles.vel"];
   auto& ghost = c.f32["particles.ghost"];
   pos.reserve(3 * n), vel.reserve(3 * n), ghost.reserve(3 * n);
   for (std::size_t i = 0; i < n; ++i)
-    put3(pos, p_.pos[i]), put3(vel, p_.vel[i]), put3(ghost, p_.ghost[i]);
-  c.f32["particles.rho"] = std::vector<float>(p_.rho.begin(), p_.rho.end());
+    put3(pos, p.pos[i]), put3(vel, p.vel[i]), put3(ghost, p.ghost[i]);
+  c.f32["particles.rho"] = std::vector<float>(p.rho.begin(), p.rho.end());
   auto& kind = c.u8["particles.kind"];
-  for (const ParticleKind k : p_.kind) kind.push_back(static_cast<std::uint8_t>(k));
-  c.u32["particles.id"] = p_.id;
-  c.u32["particles.group"] = p_.group;
+  kind.reserve(n);
+  for (const ParticleKind k : p.kind) kind.push_back(static_cast<std::uint8_t>(k));
+  c.u32["particles.id"] = p.id;
+  c.u32["particles.group"] = p.group;
+}
+
+CheckpointRows Simulation::particle_rows(const AxisRange& region) {
+  CheckpointRows rows;
+  rows.arrays = {"particles.pos",  "particles.vel", "particles.ghost", "particles.rho",
+                 "particles.kind", "particles.id",  "particles.group"};
+  rows.key_width = 3;
+  rows.keep = [region](std::span<const double> x) { return region.contains({x[0], x[1], x[2]}); };
+  return rows;
+}
+
+void Simulation::save_state(CheckpointData& c) const {
+  sync_from_device();
+  particle_state(p_, c);
+  save_global_state(c);
+}
+
+void Simulation::save_global_state(CheckpointData& c) const {
+  sync_from_device();
   c.u32["particles.next_id"] = {p_.next_id};
 
   c.f64["sim.time"] = {time_};

@@ -24,6 +24,7 @@ void Simulation::adopt_global_state(const Simulation& stepped, const StepDiagnos
   steps_ = stepped.steps_;
   dt_floor_ = stepped.dt_floor_;
   diag_ = diagnostics;
+  p_.next_id = stepped.p_.next_id;
   for (std::size_t b = 0; b < scene_.bodies.size(); ++b)
     scene_.bodies[b] = stepped.scene_.bodies[b];
   for (std::size_t n = 0; n < nets_.size(); ++n)
@@ -35,7 +36,7 @@ void Simulation::adopt_state(const Simulation& stepped, const StepDiagnostics& d
   adopt_global_state(stepped, diagnostics);
   const std::uint32_t next_id = p_.next_id;
   p_ = std::move(particles);
-  p_.next_id = std::max(p_.next_id, next_id);
+  p_.next_id = next_id;
   // The step's own sort: wrapped into periodic axes, ordered by cell, grid() to match.
   sort_particles(false);
   diag_.lost_total = diagnostics.lost_total;  // the sort found none: the exchange dropped them
