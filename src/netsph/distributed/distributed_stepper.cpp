@@ -130,6 +130,8 @@ void DistributedStepper::serve_outputs() {
         return;
       case Read::Failed:
         throw Error("outputs of process 0", c.substr(2));
+      default:
+        throw Error("distributed", fmt::format("unknown request '{}' from process 0", c.at(0)));
     }
   }
 }
