@@ -146,7 +146,7 @@ int run_command(const RunArgs& args) {
     // A process of a distributed run reads only the particles of its part of the case, once
     // the case (in the checkpoint) says where that lies; the outputs' view holds none.
     const std::filesystem::path file = checkpoint_path(args.restart_dir);
-    checkpoint = coll ? read_checkpoint_file(file, Simulation::particle_rows(AxisRange{0, 0, 0}))
+    checkpoint = coll ? read_checkpoint_file(file, Simulation::particle_rows(AxisRange::nothing()))
                       : read_checkpoint_file(file);
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
     if (coll) {

@@ -80,7 +80,7 @@ DistributedStepper::DistributedStepper(const CaseSpec& spec, Collectives& coll,
   report_particle_counts(whole);
   view_ = std::make_unique<Simulation>(spec, StepBackend::Cpu,
                                        [&whole](const CaseSpec&) { return std::move(whole); });
-  if (resume) view_->restore_state(*resume, AxisRange{0, 0, 0});  // no particles
+  if (resume) view_->restore_state(*resume, AxisRange::nothing());
   reads_ = std::make_unique<Reads>(*this);
 }
 

@@ -38,6 +38,8 @@ struct AxisRange {
     return lo == -std::numeric_limits<double>::infinity() &&
            hi == std::numeric_limits<double>::infinity();
   }
+  /// The range that contains no position.
+  static AxisRange nothing() { return {0, 0, 0}; }
 };
 
 /// The fill lattice points within `range`, each with its index in fill_box's order, without

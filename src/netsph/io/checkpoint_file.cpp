@@ -153,6 +153,20 @@ class RowReader {
     H5Sget_simple_extent_dims(space.get(), &size_, nullptr);
   }
   hsize_t size() const { return size_; }
+  /// Calls take(first_row, block) for the dataset's `rows` rows of `width` values each, read
+  /// a block of rows at a time (never the whole dataset at once).
+  template <class T, class Take>
+  void for_each_block(hsize_t rows, hsize_t width, hid_t mtype, Take&& take) const {
+    constexpr hsize_t kBlock = 1 << 18;  // rows read at once
+    std::vector<T> block;
+    for (hsize_t first = 0; first < rows; first += kBlock) {
+      block.resize(std::min(kBlock, rows - first) * width);
+      read(first * width, std::span<T>(block), mtype);
+      take(first, std::span<const T>(block));
+    }
+  }
+
+ private:
   /// Values [first, first + out.size()).
   template <class T>
   void read(hsize_t first, std::span<T> out, hid_t mtype) const {
@@ -168,7 +182,6 @@ class RowReader {
                  path_, what_);
   }
 
- private:
   std::string what_;
   const fs::path& path_;
   h5::Handle dataset_;
@@ -185,20 +198,14 @@ void read_kept_rows(hid_t file, const char* group, const std::string& name,
   if (rows == 0 ? reader.size() != 0 : reader.size() % rows != 0)
     fail(path, fmt::format("/{}/{} holds {} values for {} rows", group, name, reader.size(), rows));
   const hsize_t width = rows == 0 ? 0 : reader.size() / rows;
-  constexpr hsize_t kBlock = 1 << 18;  // rows read at once
-  std::vector<T> block;
-  for (hsize_t first = 0; first < rows; first += kBlock) {
-    const hsize_t n = std::min(kBlock, rows - first);
-    block.resize(n * width);
-    reader.read(first * width, std::span<T>(block), mtype);
-    for (hsize_t r = 0; r < n; ++r)
+  reader.for_each_block<T>(rows, width, mtype, [&](hsize_t first, std::span<const T> block) {
+    for (hsize_t r = 0; r < block.size() / width; ++r)
       if (keep[first + r])
         out.insert(out.end(), block.begin() + r * width, block.begin() + (r + 1) * width);
-  }
+  });
 }
 
-/// Which group holds the array `name` of `data` (after a read of everything else: the row
-/// arrays are the ones missing), by trying each.
+/// Which group holds the array `name` (null when none does), by trying each.
 const char* group_holding(hid_t file, const std::string& name) {
   for (const char* group : {"f64", "f32", "u32", "u8"}) {
     h5::Handle g(H5Gopen2(file, group, H5P_DEFAULT), H5Gclose);
@@ -309,23 +316,16 @@ CheckpointData read_checkpoint_file(const fs::path& path, const CheckpointRows& 
 
   // Which rows to keep, from the key array read a block at a time.
   const std::string& key = rows.arrays.front();
-  if (!group_holding(file.get(), key)) fail(path, "checkpoint has no /f64/" + key);
   const RowReader key_reader(file.get(), "f64", key, path);
   const hsize_t width = rows.key_width;
   if (width == 0 || key_reader.size() % width != 0)
     fail(path, fmt::format("/f64/{} does not hold rows of {} values", key, width));
   std::vector<bool> keep(key_reader.size() / width);
-  {
-    constexpr hsize_t kBlock = 1 << 18;
-    std::vector<double> block;
-    for (hsize_t first = 0; first < keep.size(); first += kBlock) {
-      const hsize_t n = std::min<hsize_t>(kBlock, keep.size() - first);
-      block.resize(n * width);
-      key_reader.read(first * width, std::span<double>(block), H5T_NATIVE_DOUBLE);
-      for (hsize_t r = 0; r < n; ++r)
-        keep[first + r] = rows.keep(std::span<const double>(block.data() + r * width, width));
-    }
-  }
+  key_reader.for_each_block<double>(
+      keep.size(), width, H5T_NATIVE_DOUBLE, [&](hsize_t first, std::span<const double> block) {
+        for (hsize_t r = 0; r < block.size() / width; ++r)
+          keep[first + r] = rows.keep(block.subspan(r * width, width));
+      });
   for (const std::string& name : rows.arrays) {
     const char* group = group_holding(file.get(), name);
     if (!group) fail(path, "checkpoint has no array " + name);
