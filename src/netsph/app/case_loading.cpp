@@ -12,6 +12,7 @@
 #include "netsph/case/builtin_cases.hpp"
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/distributed/memory_share.hpp"
 #include "netsph/solver/memory_preflight.hpp"
 #if defined(NETSPH_HAVE_CUDA)
 #include "netsph/backend/cuda/cuda_runtime_info.hpp"
@@ -83,15 +84,23 @@ std::string resolve_backend(const std::string& requested) {
               "unknown backend '" + requested + "'; allowed: auto, cpu, cuda, host-device");
 }
 
-void check_case_fits_memory(const CaseSpec& spec, const std::string& backend) {
-  if (const char* skip = std::getenv("NETSPH_SKIP_MEMORY_CHECK"); skip && skip[0] == '1') return;
-  const std::optional<double> available = available_memory();
-  if (!available) return;
+void check_case_fits_memory(const CaseSpec& spec, const std::string& backend, Collectives* coll) {
+  const char* skip = std::getenv("NETSPH_SKIP_MEMORY_CHECK");
+  const std::optional<double> available =
+      skip && skip[0] == '1' ? std::nullopt : available_memory();
   // What a run holds per particle on the host: about 215-230 B on the CPU backend (measured:
-  // docs/PERFORMANCE.md, "Memory"); a device run keeps the particle state (61 B) and what the
+  // docs/PERFORMANCE.md, "Memory"; a process of a distributed run about 300 B per particle of
+  // its own, with its halo); a device run keeps the particle state (61 B) and what the
   // outputs copy back. Taken low, so that only a case that cannot fit is refused.
   const double per_particle = backend == "cpu" ? 200.0 : 80.0;
   const MemoryEstimate e = estimate_case_memory(spec, per_particle);
+  if (coll) {
+    // Every process takes part, also one told to skip the check (the others would wait).
+    check_processes_fit_memory(spec.source, e, per_particle,
+                               {available, coll->processes_on_this_machine()}, *coll);
+    return;
+  }
+  if (!available) return;
   const auto gb = [](double b) { return b / 1e9; };
   if (e.bytes > *available) {
     throw Error(spec.source,

@@ -184,6 +184,7 @@ int run_command(const RunArgs& args) {
   std::unique_ptr<RunStepper> stepper;
   const auto built = std::chrono::steady_clock::now();
   if (coll) {
+    check_case_fits_memory(spec, backend, &*coll);
     stepper = std::make_unique<DistributedStepper>(spec, *coll, restart ? &checkpoint : nullptr,
                                                    RebalancePolicy{args.rebalance_every});
   } else {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "netsph/case/case_spec.hpp"
+#include "netsph/distributed/collectives.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {
@@ -87,7 +88,10 @@ std::string resolve_backend(const std::string& requested);
 /// The Simulation backend of a resolved name.
 StepBackend step_backend(const std::string& resolved);
 /// Refuses a case whose particles (estimated from its boxes, solver/memory_preflight.hpp)
-/// cannot fit the memory available to one process, naming both; warns when it is close.
-void check_case_fits_memory(const CaseSpec& spec, const std::string& backend);
+/// cannot fit the memory available to one process, naming both; warns when it is close. With
+/// `coll` (a distributed run; collective) each process's share, summed over the processes of
+/// each machine (distributed/memory_share.hpp).
+void check_case_fits_memory(const CaseSpec& spec, const std::string& backend,
+                            Collectives* coll = nullptr);
 
 }  // namespace netsph::app

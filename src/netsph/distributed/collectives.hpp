@@ -19,6 +19,8 @@ class Collectives {
   virtual ~Collectives() = default;
   virtual int rank() const = 0;
   virtual int size() const = 0;
+  /// How many of the ranks share this one's machine (its memory), this one included.
+  virtual int processes_on_this_machine() = 0;
 
   virtual double max(double v) = 0;
   /// Element-wise sums, bit for bit the same on every rank (summed in rank order on one).

@@ -66,6 +66,17 @@ MpiCollectives::MpiCollectives() {
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
+int MpiCollectives::processes_on_this_machine() {
+  // The ranks that can share memory with this one: those on its node.
+  MPI_Comm machine = MPI_COMM_NULL;
+  check(MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &machine),
+        "MPI_Comm_split_type");
+  int count = 1;
+  MPI_Comm_size(machine, &count);
+  MPI_Comm_free(&machine);
+  return count;
+}
+
 double MpiCollectives::max(double v) {
   double out = v;
   check(MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
@@ -188,6 +199,9 @@ void MpiSession::abort(int code) {
 }
 MpiCollectives::MpiCollectives() {
   throw Error("mpi", "netsph was built without MPI (install libopenmpi-dev and rebuild)");
+}
+int MpiCollectives::processes_on_this_machine() {
+  return 1;
 }
 double MpiCollectives::max(double v) {
   return v;

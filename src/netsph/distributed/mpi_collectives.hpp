@@ -26,6 +26,7 @@ class MpiCollectives final : public Collectives {
   MpiCollectives();
   int rank() const override { return rank_; }
   int size() const override { return size_; }
+  int processes_on_this_machine() override;
   double max(double v) override;
   void sum(std::span<double> v) override;
   std::uint64_t sum(std::uint64_t v) override;

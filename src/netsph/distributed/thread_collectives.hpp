@@ -30,6 +30,8 @@ class ThreadCollectives final : public Collectives {
   ThreadCollectives(ThreadTeam& team, int rank) : team_(team), rank_(rank) {}
   int rank() const override { return rank_; }
   int size() const override { return team_.size(); }
+  /// The threads of one process share its machine.
+  int processes_on_this_machine() override { return team_.size(); }
   double max(double v) override;
   void sum(std::span<double> v) override;
   std::uint64_t sum(std::uint64_t v) override;
