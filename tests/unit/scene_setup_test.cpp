@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "netsph/case/case_reader.hpp"
@@ -67,6 +68,57 @@ TEST(SceneSetup, OverlappingFillsKeepTheFirstAndARemovedParticleRemovesNothing) 
   const std::size_t per_fill = 10 * 10 * 10, column = 10 * 10;
   EXPECT_EQ(scene.particles.count(ParticleKind::Fluid), per_fill + column);
   EXPECT_EQ(scene.removed_overlaps, 2 * per_fill - column);
+}
+
+TEST(SceneSetup, OverlapsAreRemovedAsByTestingEveryEarlierParticle) {
+  // Fills shifted by random fractions of dp on every axis, and by exactly dp/2 and a round-off
+  // either side of it (a particle halfway between two cells of the search grid), in 3D and
+  // 2D: the particles kept are those a test of every pair, in creation order, keeps.
+  const double dp = 0.05;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (const int dims : {3, 2}) {
+    CaseSpec spec = fluid_cube(dp);
+    spec.simulation.dimensions = dims;
+    if (dims == 2) spec.fills[0].box.min.y = spec.fills[0].box.max.y = 0;
+    const FillSpec base = spec.fills[0];
+    std::vector<Vec3d> shifts = {{0.5 * dp, 0, 0},
+                                 {0, 0, 0.5 * dp * (1 + 1e-13)},
+                                 {0.5 * dp * (1 - 1e-13), 0.5 * dp, 0.5 * dp}};
+    for (int k = 0; k < 6; ++k) shifts.push_back({u(rng) * dp, u(rng) * dp, u(rng) * dp});
+    for (Vec3d shift : shifts) {
+      if (dims == 2) shift.y = 0;
+      FillSpec f = base;
+      f.box = {base.box.min + shift, base.box.max + shift};
+      spec.fills.push_back(f);
+    }
+    // Every fill's particles alone, in creation order, then the greedy test of every pair.
+    std::vector<Vec3d> kept;
+    std::size_t created = 0;
+    for (const FillSpec& f : spec.fills) {
+      CaseSpec one = spec;
+      one.fills = {f};
+      for (const Vec3d& x : build_scene(one).particles.pos) {
+        ++created;
+        const bool overlaps = std::any_of(kept.begin(), kept.end(), [&](const Vec3d& y) {
+          return norm2(x - y) < 0.25 * dp * dp;
+        });
+        if (!overlaps) kept.push_back(x);
+      }
+    }
+    const Scene scene = build_scene(spec);
+    const auto& pos = scene.particles.pos;
+    ASSERT_EQ(pos.size(), kept.size()) << dims << "D";
+    EXPECT_EQ(scene.removed_overlaps, created - kept.size());
+    std::vector<Vec3d> built(pos.begin(), pos.end());
+    const auto by_xyz = [](const Vec3d& a, const Vec3d& b) {
+      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    };
+    std::sort(built.begin(), built.end(), by_xyz);
+    std::sort(kept.begin(), kept.end(), by_xyz);
+    EXPECT_TRUE(built == kept) << dims << "D";
+    std::printf("%dD: %zu created, %zu kept\n", dims, created, kept.size());
+  }
 }
 
 TEST(SceneSetup, FluidInsideBodiesIsRemovedAsByTestingEveryBody) {
