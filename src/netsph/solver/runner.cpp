@@ -160,12 +160,10 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
     CheckpointData c = opt.case_record;
     view->save_global_state(c);
     outputs->save_state(c);
-    // The particles' arrays from each process in turn.
+    // The particles' arrays from each process in turn, in blocks of rows.
     write_checkpoint_file(checkpoint_path(opt.out_dir), c, [&particles](const auto& add) {
       particles.pieces(ParticleSelection::All, [&add](const ParticleSet& piece) {
-        CheckpointData arrays;
-        Simulation::particle_state(piece, arrays);
-        add(arrays);
+        Simulation::particle_state_blocks(piece, add);
       });
     });
     checkpoint_time = view->time();

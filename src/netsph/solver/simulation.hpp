@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -162,9 +163,16 @@ class Simulation {
   /// Everything a restart needs but the particles' arrays (the time, bodies, nets, the next
   /// particle id...): a distributed run's checkpoint takes the particles from the processes.
   void save_global_state(CheckpointData& c) const;
-  /// Adds the arrays of the particles `p` to `c`; the checkpoint's particles are those of
-  /// every call (write_checkpoint_file's pieces) in turn.
-  static void particle_state(const ParticleSet& p, CheckpointData& c);
+  /// Sets the arrays of `c` to those of the particles first..first + count - 1 of `p` (count
+  /// cut at its end); the checkpoint's particles are those of every call
+  /// (write_checkpoint_file's pieces) in turn.
+  static void particle_state(const ParticleSet& p, CheckpointData& c, std::size_t first = 0,
+                             std::size_t count = std::numeric_limits<std::size_t>::max());
+  /// Calls add() with the arrays of the particles `p` in blocks of `rows` (at least one call):
+  /// a checkpoint written from them never holds a second copy of every particle.
+  static void particle_state_blocks(const ParticleSet& p,
+                                    const std::function<void(const CheckpointData&)>& add,
+                                    std::size_t rows = std::size_t{1} << 18);
   /// The checkpoint's particles in `region` (read_checkpoint_file's rows): what one process
   /// of a distributed restart reads of the file.
   static CheckpointRows particle_rows(const AxisRange& region);

@@ -3,6 +3,8 @@
 // build): the particles in their sorted order, time, step count, dt floor, diagnostics, the
 // rigid bodies' states (and last forces, for the outputs) and the nets' knots. The scene
 // (walls, zones, body shapes), the grid and every scratch array come from the case again.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "netsph/solver/simulation.hpp"
@@ -17,20 +19,37 @@ void put3(std::vector<T>& out, const V& v) {
 
 }  // namespace
 
-void Simulation::particle_state(const ParticleSet& p, CheckpointData& c) {
-  const std::size_t n = p.size();
+void Simulation::particle_state(const ParticleSet& p, CheckpointData& c, std::size_t first,
+                                std::size_t count) {
+  first = std::min(first, p.size());
+  const std::size_t end = first + std::min(count, p.size() - first);
   auto& pos = c.f64["particles.pos"];
   auto& vel = c.f32["particles.vel"];
   auto& ghost = c.f32["particles.ghost"];
-  pos.reserve(3 * n), vel.reserve(3 * n), ghost.reserve(3 * n);
-  for (std::size_t i = 0; i < n; ++i)
-    put3(pos, p.pos[i]), put3(vel, p.vel[i]), put3(ghost, p.ghost[i]);
-  c.f32["particles.rho"] = std::vector<float>(p.rho.begin(), p.rho.end());
+  auto& rho = c.f32["particles.rho"];
   auto& kind = c.u8["particles.kind"];
-  kind.reserve(n);
-  for (const ParticleKind k : p.kind) kind.push_back(static_cast<std::uint8_t>(k));
-  c.u32["particles.id"] = p.id;
-  c.u32["particles.group"] = p.group;
+  pos.clear(), vel.clear(), ghost.clear(), rho.clear(), kind.clear();
+  pos.reserve(3 * (end - first)), vel.reserve(3 * (end - first)), ghost.reserve(3 * (end - first));
+  kind.reserve(end - first);
+  for (std::size_t i = first; i < end; ++i) {
+    put3(pos, p.pos[i]), put3(vel, p.vel[i]), put3(ghost, p.ghost[i]);
+    kind.push_back(static_cast<std::uint8_t>(p.kind[i]));
+  }
+  rho.assign(p.rho.begin() + first, p.rho.begin() + end);
+  c.u32["particles.id"].assign(p.id.begin() + first, p.id.begin() + end);
+  c.u32["particles.group"].assign(p.group.begin() + first, p.group.begin() + end);
+}
+
+void Simulation::particle_state_blocks(const ParticleSet& p,
+                                       const std::function<void(const CheckpointData&)>& add,
+                                       std::size_t rows) {
+  CheckpointData block;
+  std::size_t first = 0;
+  do {
+    particle_state(p, block, first, rows);
+    add(block);
+    first += rows;
+  } while (first < p.size());
 }
 
 CheckpointRows Simulation::particle_rows(const AxisRange& region) {
