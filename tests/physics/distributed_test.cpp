@@ -6,13 +6,18 @@
 // mpirun.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <random>
 
 #include "case_runs.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/distributed/distributed_simulation.hpp"
+#include "netsph/distributed/particle_exchange.hpp"
 #include "netsph/distributed/thread_collectives.hpp"
 #include "state_difference.hpp"
 #include "thread_processes.hpp"
@@ -242,6 +247,70 @@ TEST(Distributed, CutsFallOnTheBinBoundariesNearestEqualShares) {
   EXPECT_NEAR(peak[2], 0.8, 1e-12);  // half the work on each side
   for (int r = 0; r < 4; ++r) EXPECT_GE(peak[r + 1] - peak[r], 0.1 - 1e-12) << r;
   EXPECT_THROW(equal_work_cuts(u, 1.0, 11), Error);  // fewer bins than slabs
+}
+
+TEST(Distributed, TheExchangeSendsOwnersTheirParticlesAndTheHaloOnAnyThreadCount) {
+  // Three processes, each starting with 30000 particles anywhere in the domain (and 7 outside
+  // it): after one exchange each holds exactly the particles of its slab and copies of the
+  // others' within the halo, in the same order whether it packs on one thread or four.
+  const double halo = 0.3;
+  SlabPartition slabs;
+  slabs.axis = 0;
+  slabs.cuts = {0.0, 1.5, 2.5, 4.0};
+  slabs.halo = halo;
+  CellGrid grid;
+  grid.configure({0, 0, 0}, {4, 1, 1}, 0.1, 0.0, 3);
+  const auto start = [](int r) {
+    std::mt19937 rng(100 + r);
+    std::uniform_real_distribution<double> u(0, 1);
+    ParticleSet p;
+    p.next_id = 100000 * r;
+    for (int k = 0; k < 30000; ++k)
+      p.add({4 * u(rng), u(rng), u(rng)}, {}, 1000, ParticleKind::Fluid,
+            static_cast<std::uint32_t>(k));
+    for (int k = 0; k < 7; ++k) p.add({5, 0.5, 0.5}, {}, 1000, ParticleKind::Fluid);
+    return p;
+  };
+  std::vector<ParticleSet> everyone;
+  for (int r = 0; r < 3; ++r) everyone.push_back(start(r));
+  std::map<int, std::vector<ParticleSet>> after;
+  for (const int threads : {1, 4}) {
+    after[threads].resize(3);
+    std::vector<std::uint64_t> lost(3);
+    const auto errors = test::on_thread_processes(3, [&](ThreadCollectives& coll) {
+      omp_set_num_threads(threads);
+      ParticleExchange exchange(slabs, coll);
+      ParticleSet p = start(coll.rank());
+      exchange.own_all(p);
+      lost[coll.rank()] = exchange.exchange(p, grid).lost;
+      after[threads][coll.rank()] = p;
+    });
+    for (const std::string& e : errors) EXPECT_EQ(e, "");
+    for (int r = 0; r < 3; ++r) EXPECT_EQ(lost[r], 7u);
+  }
+  for (int r = 0; r < 3; ++r) {
+    const ParticleSet &one = after[1][r], &four = after[4][r];
+    EXPECT_TRUE(one.pos == four.pos && one.id == four.id && one.group == four.group &&
+                one.rho == four.rho && one.kind == four.kind)
+        << "process " << r << ": four threads pack another order or other particles";
+    // What process r must hold: its slab's particles and the others' within the halo.
+    std::vector<std::uint32_t> expected;
+    for (const ParticleSet& p : everyone)
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.pos[i].x < 4 &&
+            (slabs.owner_of(p.pos[i]) == r || slabs.distance_to(r, p.pos[i]) < halo))
+          expected.push_back(p.id[i]);
+    std::vector<std::uint32_t> held = one.id;
+    std::sort(expected.begin(), expected.end());
+    std::sort(held.begin(), held.end());
+    EXPECT_EQ(held, expected) << "process " << r;
+    for (std::size_t i = 0; i < one.size(); ++i) {  // every field arrived with its particle
+      const ParticleSet& from = everyone[one.id[i] / 100000];
+      const std::size_t k = one.id[i] % 100000;
+      ASSERT_EQ(one.pos[i], from.pos[k]);
+      ASSERT_EQ(one.group[i], from.group[k]);
+    }
+  }
 }
 
 TEST(Distributed, SlabsBalanceParticlesAndOwnEveryPositionOnce) {

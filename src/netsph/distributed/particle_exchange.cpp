@@ -1,5 +1,8 @@
 #include "netsph/distributed/particle_exchange.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -17,11 +20,53 @@ struct PackedParticle {
   ParticleKind kind;
 };
 
+PackedParticle packed(const ParticleSet& p, std::size_t i) {
+  return {p.pos[i], p.vel[i], p.ghost[i], p.rho[i], p.id[i], p.group[i], p.kind[i]};
+}
+
 void pack(Bytes& out, const ParticleSet& p, std::size_t i) {
-  const PackedParticle q{p.pos[i], p.vel[i], p.ghost[i], p.rho[i], p.id[i], p.group[i], p.kind[i]};
+  const PackedParticle q = packed(p, i);
   const std::size_t at = out.size();
   out.resize(at + sizeof q);
   std::memcpy(out.data() + at, &q, sizeof q);
+}
+
+/// Packs, for each rank r, the particles i with goes_to(i, r), in index order, into out[r]:
+/// in parallel, each thread counting then writing its own contiguous share of the particles
+/// at its offset, so the bytes are those of one thread packing them in turn.
+template <class GoesTo>
+void pack_where(std::vector<Bytes>& out, const ParticleSet& p, std::span<const int> ranks,
+                const GoesTo& goes_to) {
+  const std::size_t n = p.size(), nr = ranks.size();
+  if (nr == 0) return;
+  const int threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>(n / 4096) + 1));
+  // counts[t * nr + k]: thread t's particles for ranks[k]; then its offset within out[ranks[k]].
+  std::vector<std::size_t> counts(static_cast<std::size_t>(threads) * nr, 0);
+  const auto share = [n, threads](int t) { return n * static_cast<std::size_t>(t) / threads; };
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    std::size_t* mine = counts.data() + static_cast<std::size_t>(t) * nr;
+    for (std::size_t i = share(t); i < share(t + 1); ++i)
+      for (std::size_t k = 0; k < nr; ++k) mine[k] += goes_to(i, ranks[k]);
+#pragma omp barrier
+#pragma omp single
+    for (std::size_t k = 0; k < nr; ++k) {
+      std::size_t total = 0;
+      for (int u = 0; u < threads; ++u) {
+        const std::size_t c = counts[static_cast<std::size_t>(u) * nr + k];
+        counts[static_cast<std::size_t>(u) * nr + k] = total;
+        total += c;
+      }
+      out[ranks[k]].resize(total * sizeof(PackedParticle));
+    }
+    for (std::size_t i = share(t); i < share(t + 1); ++i)
+      for (std::size_t k = 0; k < nr; ++k) {
+        if (!goes_to(i, ranks[k])) continue;
+        const PackedParticle q = packed(p, i);
+        std::memcpy(out[ranks[k]].data() + mine[k]++ * sizeof q, &q, sizeof q);
+      }
+  }
 }
 
 /// Moves particle `from` to slot `to` (to <= from), every field.
@@ -56,14 +101,19 @@ void ParticleExchange::set_owned(std::uint32_t id, bool on) {
 }
 
 void ParticleExchange::unpack(const Bytes& bytes, ParticleSet& p) {
-  const std::size_t n = bytes.size() / sizeof(PackedParticle);
-  p.reserve_more(n);
-  for (std::size_t k = 0; k < n; ++k) {
+  const std::size_t n = bytes.size() / sizeof(PackedParticle), first = p.size();
+  // Grown as a running case's arrays grow (core/growth.hpp), not doubled.
+  resize_for(p.pos, first + n), resize_for(p.vel, first + n), resize_for(p.ghost, first + n);
+  resize_for(p.rho, first + n), resize_for(p.id, first + n), resize_for(p.group, first + n);
+  resize_for(p.kind, first + n);
+  const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (n > 8192)
+  for (std::int64_t k = 0; k < count; ++k) {
     PackedParticle q;
     std::memcpy(&q, bytes.data() + k * sizeof q, sizeof q);
-    p.pos.push_back(q.pos), p.vel.push_back(q.vel), p.ghost.push_back(q.ghost);
-    p.rho.push_back(q.rho), p.id.push_back(q.id), p.group.push_back(q.group);
-    p.kind.push_back(q.kind);
+    const std::size_t i = first + static_cast<std::size_t>(k);
+    p.pos[i] = q.pos, p.vel[i] = q.vel, p.ghost[i] = q.ghost, p.rho[i] = q.rho;
+    p.id[i] = q.id, p.group[i] = q.group, p.kind[i] = q.kind;
   }
 }
 
@@ -84,27 +134,47 @@ void ParticleExchange::own_all(const ParticleSet& p) {
 ExchangeReport ParticleExchange::exchange(ParticleSet& p, const CellGrid& grid) {
   const int me = coll_.rank();
   ExchangeReport report;
-  std::vector<Bytes> send(coll_.size());
   const std::size_t owned_before = owned_count_;
-  std::size_t w = 0, present = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!owned(p.id[i])) continue;  // a halo copy: its owner sends it again
-    ++present;
+  // Where each particle goes, decided in parallel (the owner's search and the grid's test are
+  // most of the work): a halo copy is dropped (its owner sends it again), an own particle
+  // outside the grid is lost (the sort's own test: the step would drop it), one in another
+  // slab goes to its owner.
+  constexpr int kHaloCopy = -3, kLost = -2, kKeep = -1;
+  const auto n = static_cast<std::int64_t>(p.size());
+  std::vector<int> dest(p.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!owned(p.id[i])) {
+      dest[i] = kHaloCopy;
+      continue;
+    }
     const Vec3d x = grid.wrapped(p.pos[i]);
-    // The sort's own test: outside the grid, the step would drop it as lost.
     if (!std::isfinite(x.x + x.y + x.z) || grid.cell_of(x) < 0) {
-      note_lost(report, p, i);
-      set_owned(p.id[i], false);
+      dest[i] = kLost;
       continue;
     }
     const int owner = slabs_.owner_of(x);
-    if (owner != me) {
-      pack(send[owner], p, i);
+    dest[i] = owner == me ? kKeep : owner;
+  }
+  std::vector<Bytes> send(coll_.size());
+  std::vector<int> others;
+  for (int r = 0; r < coll_.size(); ++r)
+    if (r != me) others.push_back(r);
+  pack_where(send, p, others, [&dest](std::size_t i, int r) { return dest[i] == r; });
+  // In index order: the lost particles' report, ownership, and the kept ones moved down.
+  std::size_t w = 0, present = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (dest[i] == kHaloCopy) continue;
+    ++present;
+    if (dest[i] == kLost) {
+      note_lost(report, p, i);
+      set_owned(p.id[i], false);
+    } else if (dest[i] != kKeep) {
       set_owned(p.id[i], false);
       ++report.sent;
-      continue;
+    } else {
+      move_slot(p, w++, i);
     }
-    move_slot(p, w++, i);
   }
   // Own particles the step itself dropped (a mid-step re-sort finding them outside the grid).
   if (present < owned_before) {
@@ -133,9 +203,8 @@ ExchangeReport ParticleExchange::exchange(ParticleSet& p, const CellGrid& grid) 
 
 void ParticleExchange::send_halo(ParticleSet& p, ExchangeReport& report) {
   std::vector<Bytes> send(coll_.size());
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (const int r : halo_neighbours_)
-      if (slabs_.distance_to(r, p.pos[i]) < slabs_.halo) pack(send[r], p, i);
+  pack_where(send, p, halo_neighbours_,
+             [&](std::size_t i, int r) { return slabs_.distance_to(r, p.pos[i]) < slabs_.halo; });
   const std::vector<Bytes> received = coll_.exchange(send);
   const std::size_t before = p.size();
   for (const Bytes& b : received) unpack(b, p);
