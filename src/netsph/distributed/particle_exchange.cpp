@@ -156,11 +156,16 @@ ExchangeReport ParticleExchange::exchange(ParticleSet& p, const CellGrid& grid) 
     const int owner = slabs_.owner_of(x);
     dest[i] = owner == me ? kKeep : owner;
   }
-  std::vector<Bytes> send(coll_.size());
-  std::vector<int> others;
+  // The ranks some particle goes to (usually a neighbour or two; any after the slabs were cut
+  // again): packing tests each particle against these only.
+  std::vector<char> targeted(coll_.size(), 0);
+  for (const int d : dest)
+    if (d >= 0) targeted[d] = 1;
+  std::vector<int> targets;
   for (int r = 0; r < coll_.size(); ++r)
-    if (r != me) others.push_back(r);
-  pack_where(send, p, others, [&dest](std::size_t i, int r) { return dest[i] == r; });
+    if (targeted[r]) targets.push_back(r);
+  std::vector<Bytes> send(coll_.size());
+  pack_where(send, p, targets, [&dest](std::size_t i, int r) { return dest[i] == r; });
   // In index order: the lost particles' report, ownership, and the kept ones moved down.
   std::size_t w = 0, present = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
