@@ -69,6 +69,7 @@ std::vector<std::string> try_run_on(const CaseSpec& spec, int processes, const f
   return test::on_thread_processes(processes, [&](ThreadCollectives& coll) {
     const CheckpointData* resume = resumes ? &(*resumes)[coll.rank()] : nullptr;
     DistributedStepper stepper(spec, coll, resume);
+    stepper.set_output_block_rows(97);  // each process's particles reach the files in blocks
     RunOptions opt = quiet_run(dir);
     opt.resume = resume;
     run_stepped(stepper, opt);

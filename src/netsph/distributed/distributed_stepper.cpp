@@ -182,20 +182,26 @@ std::uint64_t DistributedStepper::count_all(ParticleSelection which) {
 
 void DistributedStepper::pieces_all(ParticleSelection which,
                                     const std::function<void(const ParticleSet&)>& take) {
-  // Process 0 unpacks each process's particles as they come and hands them on. Should take()
-  // fail (a full disk), the gather still runs to its end, so that no process is left waiting
-  // in it, and the error is thrown after.
+  // Process 0 unpacks each process's particles as they come and hands them on, in blocks of
+  // rows: it holds one process's bytes and a block, not a second copy of the process's share.
+  // Should take() fail (a full disk), the gather still runs to its end, so that no process is
+  // left waiting in it, and the error is thrown after.
   ParticleSet piece;
   std::exception_ptr failed;
   coll_.gather_each(sim_.pack_own(which), [&](int, const Bytes& b) {
-    if (failed) return;
-    piece = ParticleSet{};
-    ParticleExchange::unpack(b, piece);
-    try {
-      take(piece);
-    } catch (...) {
-      failed = std::current_exception();
-    }
+    const std::size_t rows = ParticleExchange::packed_count(b);
+    std::size_t first = 0;
+    do {  // at least one piece a process, if empty
+      if (failed) return;
+      piece = ParticleSet{};
+      ParticleExchange::unpack(b, piece, first, block_rows_);
+      try {
+        take(piece);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+      first += block_rows_;
+    } while (first < rows);
   });
   if (failed) std::rethrow_exception(failed);
 }

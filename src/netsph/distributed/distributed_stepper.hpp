@@ -8,6 +8,7 @@
 // no process holds the whole run's particles while it runs, and a step without outputs costs
 // one broadcast. Checkpoints hold the whole state: a distributed run can be continued as one
 // process.
+#include <algorithm>
 #include <memory>
 
 #include "netsph/distributed/distributed_simulation.hpp"
@@ -42,6 +43,9 @@ class DistributedStepper final : public RunStepper {
   void finish() override;
 
   const DistributedSimulation& simulation() const { return sim_; }
+  /// The largest piece the outputs get of a process's particles (default 2^18 rows): process 0
+  /// holds one process's packed bytes and one such piece while it writes them.
+  void set_output_block_rows(std::size_t rows) { block_rows_ = std::max<std::size_t>(rows, 1); }
 
  private:
   class Reads;
@@ -56,6 +60,7 @@ class DistributedStepper final : public RunStepper {
   DistributedSimulation sim_;
   std::unique_ptr<Simulation> view_;  // process 0 only
   std::unique_ptr<Reads> reads_;      // process 0 only
+  std::size_t block_rows_ = std::size_t{1} << 18;
 };
 
 }  // namespace netsph

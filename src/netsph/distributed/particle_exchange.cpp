@@ -100,17 +100,24 @@ void ParticleExchange::set_owned(std::uint32_t id, bool on) {
   owned_[id / 64] = on ? owned_[id / 64] | bit : owned_[id / 64] & ~bit;
 }
 
-void ParticleExchange::unpack(const Bytes& bytes, ParticleSet& p) {
-  const std::size_t n = bytes.size() / sizeof(PackedParticle), first = p.size();
+std::size_t ParticleExchange::packed_count(const Bytes& bytes) {
+  return bytes.size() / sizeof(PackedParticle);
+}
+
+void ParticleExchange::unpack(const Bytes& bytes, ParticleSet& p, std::size_t from,
+                              std::size_t count) {
+  const std::size_t rows = packed_count(bytes), first = p.size();
+  from = std::min(from, rows);
+  const std::size_t n = std::min(count, rows - from);
   // Grown as a running case's arrays grow (core/growth.hpp), not doubled.
   resize_for(p.pos, first + n), resize_for(p.vel, first + n), resize_for(p.ghost, first + n);
   resize_for(p.rho, first + n), resize_for(p.id, first + n), resize_for(p.group, first + n);
   resize_for(p.kind, first + n);
-  const auto count = static_cast<std::int64_t>(n);
+  const auto unpacked = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static) if (n > 8192)
-  for (std::int64_t k = 0; k < count; ++k) {
+  for (std::int64_t k = 0; k < unpacked; ++k) {
     PackedParticle q;
-    std::memcpy(&q, bytes.data() + k * sizeof q, sizeof q);
+    std::memcpy(&q, bytes.data() + (from + static_cast<std::size_t>(k)) * sizeof q, sizeof q);
     const std::size_t i = first + static_cast<std::size_t>(k);
     p.pos[i] = q.pos, p.vel[i] = q.vel, p.ghost[i] = q.ghost, p.rho[i] = q.rho;
     p.id[i] = q.id, p.group[i] = q.group, p.kind[i] = q.kind;

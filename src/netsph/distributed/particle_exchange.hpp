@@ -7,6 +7,7 @@
 // still the other process's particle (its owner sends it), so no particle is ever doubled
 // or dropped by a round-off difference between two copies.
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -49,8 +50,12 @@ class ParticleExchange {
   /// This process's own particles (those with keep[i] != 0 when `keep` is given), packed (for
   /// a gather).
   Bytes pack_owned(const ParticleSet& p, std::span<const std::uint8_t> keep = {}) const;
-  /// Appends packed particles to `p`.
-  static void unpack(const Bytes& bytes, ParticleSet& p);
+  /// Appends packed particles to `p`: all of them, or `count` from row `first` on (cut at the
+  /// end).
+  static void unpack(const Bytes& bytes, ParticleSet& p, std::size_t first = 0,
+                     std::size_t count = std::numeric_limits<std::size_t>::max());
+  /// How many particles `bytes` hold.
+  static std::size_t packed_count(const Bytes& bytes);
 
  private:
   void send_halo(ParticleSet& p, ExchangeReport& report);

@@ -49,8 +49,8 @@ class OutputParticles {
   virtual void sample(std::span<const Vec3d> points, std::span<ShepardValue> values) = 0;
   /// How many particles pieces(which) hands over in all.
   virtual std::uint64_t count(ParticleSelection which) = 0;
-  /// Calls take() with the run's particles of `which`, in pieces (one process's at a time;
-  /// one piece on one process); a piece lives only during its call.
+  /// Calls take() with the run's particles of `which`, in pieces (one process's at a time, in
+  /// blocks of rows; one piece on one process); a piece lives only during its call.
   virtual void pieces(ParticleSelection which,
                       const std::function<void(const ParticleSet&)>& take) = 0;
 };
