@@ -89,7 +89,7 @@ void check_case_fits_memory(const CaseSpec& spec, const std::string& backend, Co
   const std::optional<double> available =
       skip && skip[0] == '1' ? std::nullopt : available_memory();
   // What a run holds per particle on the host: about 215-230 B on the CPU backend (measured:
-  // docs/PERFORMANCE.md, "Memory"; a process of a distributed run about 300 B per particle of
+  // docs/PERFORMANCE.md, "Memory"; a process of a distributed run 260-300 B per particle of
   // its own, with its halo); a device run keeps the particle state (61 B) and what the
   // outputs copy back. Taken low, so that only a case that cannot fit is refused.
   const double per_particle = backend == "cpu" ? 200.0 : 80.0;
