@@ -313,6 +313,18 @@ CheckpointData read_checkpoint_file(const fs::path& path, const CheckpointRows& 
   if (data.text["_magic"] != kMagic) throw Error(path.string(), "not a netsph checkpoint");
   data.text.erase("_magic");
   if (rows.arrays.empty()) return data;
+  if (!rows.keep) {  // no row: the arrays are there, empty
+    for (const std::string& name : rows.arrays) {
+      const char* group = group_holding(file.get(), name);
+      if (!group) fail(path, "checkpoint has no array " + name);
+      const std::string_view g = group;
+      if (g == "f64") data.f64[name].clear();
+      if (g == "f32") data.f32[name].clear();
+      if (g == "u32") data.u32[name].clear();
+      if (g == "u8") data.u8[name].clear();
+    }
+    return data;
+  }
 
   // Which rows to keep, from the key array read a block at a time.
   const std::string& key = rows.arrays.front();

@@ -44,7 +44,8 @@ CheckpointData read_checkpoint_file(const std::filesystem::path& path);
 
 /// Some rows of arrays that hold one row per item (a distributed process's particles): row r
 /// of every array named in `arrays` is read when keep() accepts row r of the first, an f64
-/// array of `key_width` values per row.
+/// array of `key_width` values per row. Without keep() none is read, not even the key: the
+/// arrays come back empty.
 struct CheckpointRows {
   std::vector<std::string> arrays;
   std::size_t key_width = 1;

@@ -57,6 +57,7 @@ CheckpointRows Simulation::particle_rows(const AxisRange& region) {
   rows.arrays = {"particles.pos",  "particles.vel", "particles.ghost", "particles.rho",
                  "particles.kind", "particles.id",  "particles.group"};
   rows.key_width = 3;
+  if (!(region.lo < region.hi)) return rows;  // no row: the positions are not read to find none
   rows.keep = [region](std::span<const double> x) { return region.contains({x[0], x[1], x[2]}); };
   return rows;
 }
