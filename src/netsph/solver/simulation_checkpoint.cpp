@@ -43,6 +43,7 @@ void Simulation::particle_state(const ParticleSet& p, CheckpointData& c, std::si
 void Simulation::particle_state_blocks(const ParticleSet& p,
                                        const std::function<void(const CheckpointData&)>& add,
                                        std::size_t rows) {
+  rows = std::max<std::size_t>(rows, 1);
   CheckpointData block;
   std::size_t first = 0;
   do {
