@@ -24,13 +24,6 @@ PackedParticle packed(const ParticleSet& p, std::size_t i) {
   return {p.pos[i], p.vel[i], p.ghost[i], p.rho[i], p.id[i], p.group[i], p.kind[i]};
 }
 
-void pack(Bytes& out, const ParticleSet& p, std::size_t i) {
-  const PackedParticle q = packed(p, i);
-  const std::size_t at = out.size();
-  out.resize(at + sizeof q);
-  std::memcpy(out.data() + at, &q, sizeof q);
-}
-
 /// Packs, for each rank r, the particles i with goes_to(i, r), in index order, into out[r]:
 /// in parallel, each thread counting then writing its own contiguous share of the particles
 /// at its offset, so the bytes are those of one thread packing them in turn.
@@ -76,9 +69,11 @@ void move_slot(ParticleSet& p, std::size_t to, std::size_t from) {
   p.kind[to] = p.kind[from];
 }
 
-void truncate(ParticleSet& p, std::size_t n) {
-  p.pos.resize(n), p.vel.resize(n), p.ghost.resize(n), p.rho.resize(n), p.id.resize(n);
-  p.group.resize(n), p.kind.resize(n);
+/// Every array to n particles, grown as a running case's arrays grow (core/growth.hpp), not
+/// doubled.
+void resize_all(ParticleSet& p, std::size_t n) {
+  resize_for(p.pos, n), resize_for(p.vel, n), resize_for(p.ghost, n), resize_for(p.rho, n);
+  resize_for(p.id, n), resize_for(p.group, n), resize_for(p.kind, n);
 }
 
 void note_lost(ExchangeReport& r, const ParticleSet& p, std::size_t i) {
@@ -109,10 +104,7 @@ void ParticleExchange::unpack(const Bytes& bytes, ParticleSet& p, std::size_t fr
   const std::size_t rows = packed_count(bytes), first = p.size();
   from = std::min(from, rows);
   const std::size_t n = std::min(count, rows - from);
-  // Grown as a running case's arrays grow (core/growth.hpp), not doubled.
-  resize_for(p.pos, first + n), resize_for(p.vel, first + n), resize_for(p.ghost, first + n);
-  resize_for(p.rho, first + n), resize_for(p.id, first + n), resize_for(p.group, first + n);
-  resize_for(p.kind, first + n);
+  resize_all(p, first + n);
   const auto unpacked = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static) if (n > 8192)
   for (std::int64_t k = 0; k < unpacked; ++k) {
@@ -125,11 +117,11 @@ void ParticleExchange::unpack(const Bytes& bytes, ParticleSet& p, std::size_t fr
 }
 
 Bytes ParticleExchange::pack_owned(const ParticleSet& p, std::span<const std::uint8_t> keep) const {
-  Bytes out;
-  if (keep.empty()) out.reserve(owned_count_ * sizeof(PackedParticle));
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (owned(p.id[i]) && (keep.empty() || keep[i])) pack(out, p, i);
-  return out;
+  std::vector<Bytes> out(1);
+  const int only = 0;
+  pack_where(out, p, {&only, 1},
+             [&](std::size_t i, int) { return owned(p.id[i]) && (keep.empty() || keep[i]); });
+  return std::move(out[0]);
 }
 
 void ParticleExchange::own_all(const ParticleSet& p) {
@@ -201,7 +193,7 @@ ExchangeReport ParticleExchange::exchange(ParticleSet& p, const CellGrid& grid) 
       }
     }
   }
-  truncate(p, w);
+  resize_all(p, w);
   const std::vector<Bytes> received = coll_.exchange(send);
   for (const Bytes& b : received) {
     const std::size_t first = p.size();
