@@ -4,6 +4,7 @@
 // one unit of the last stated digit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "netsph/core/error.hpp"
@@ -157,6 +158,33 @@ TEST(NetGenerator, SinkerAndAnchors) {
   const double v_sinker = 3.14159265358979 / 4 * 0.006 * 0.006 * 0.1;
   const double v_net = net.netting_mass / s.material_density;
   EXPECT_NEAR(weight, -9.81 * ((8610 - 1000) * v_sinker + (1140 - 1000) * v_net), 1e-9);
+}
+
+TEST(NetGenerator, ResolvedKnotsInAFluidWithGravityTakeTheBuoyancyOfTheNettingOnly) {
+  // Knots resolved by particles in a fluid with gravity: the fluid's pressure lifts each knot by
+  // rho_w g V on the volume its particles resolve, at least 2 dp thick (the 5 x 5 panel's knots
+  // are 2.7 mm thick); the generator adds the rest of the netting's buoyancy. It took the
+  // knot's own volume, so a knot resolved thicker floated by the difference.
+  NetSpec s = panel_5x5();
+  NetEnvironment env;
+  env.knot_buoyancy = false;
+  for (const double dp : {1e-5, 0.003}) {
+    env.resolved_dp = dp;
+    const NetModel net = generate_net(s, env);
+    const NetKnot& k = net.knots[0];
+    const KnotGeometry& g = k.geometry;
+    const double resolved =
+        std::max(g.size, 2 * dp) * std::max(g.size, 2 * dp) * std::max(g.thickness, 2 * dp);
+    if (dp > 0.001) {
+      EXPECT_GT(resolved, 1.5 * g.volume);  // the thickness was raised
+    }
+    const double netting_volume = k.mass / s.material_density;
+    // Weight less the buoyancy the fluid does not give: total = (m - rho_w V_netting) g.
+    EXPECT_NEAR(k.constant_force.z, -9.81 * (k.mass - 1000 * (netting_volume - resolved)), 1e-12)
+        << "dp = " << dp;
+    EXPECT_NEAR(k.constant_force.z + 9.81 * 1000 * resolved,
+                -9.81 * (k.mass - 1000 * netting_volume), 1e-12);
+  }
 }
 
 TEST(NetGenerator, OutlineMustHoldWholeMeshes) {

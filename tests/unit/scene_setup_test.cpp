@@ -164,6 +164,53 @@ TEST(SceneSetup, FluidInsideBodiesIsRemovedAsByTestingEveryBody) {
   }
 }
 
+// A floating body's mass and inertia are those of the body as the case gives it: in 2D of its
+// section by the plane, a disc for a cylinder across it (was a length x diameter rectangle:
+// 100 kg/m for a 15.7 kg/m cylinder, which then sank at half the water's density), and for a
+// body thinner than 2 dp not those of the thickened shape its particles resolve (a 4 mm plate
+// turned like one ten times heavier).
+constexpr const char* kFloatingBodies2D = R"(
+[simulation]
+dimensions = 2
+dp = 0.02
+end_time = 1.0
+[domain]
+min = [0.0, 0.0, 0.0]
+max = [2.0, 0.0, 1.0]
+[[fill]]
+min = [0.0, 0.0, 0.0]
+max = [2.0, 0.0, 0.8]
+[[body]]
+shape = "cylinder"
+diameter = 0.2
+length = 3.0
+center = [0.5, 0.0, 0.4]
+motion = "floating"
+density = 500.0
+[[body]]
+shape = "plate"
+thickness = 0.004
+width = 0.3
+height = 0.3
+center = [1.2, 0.0, 0.4]
+motion = "floating"
+mass = 4.0
+)";
+
+TEST(SceneSetup, FloatingBodiesTakeTheMassAndInertiaOfTheBodyAsGiven) {
+  const Scene scene = build_scene(read_case_string(kFloatingBodies2D, "floating_bodies", {}));
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  const double pi = 3.14159265358979323846, r = 0.1;
+  const RigidInertia& cylinder = scene.bodies[0].inertia;
+  EXPECT_NEAR(cylinder.mass, 500 * pi * r * r, 1e-9);  // kg/m, whatever its length
+  EXPECT_NEAR(cylinder.principal.y, cylinder.mass * r * r / 2, 1e-12);
+  // The 4 mm plate is resolved two particles (0.04 m) thick; its mass is the given 4 kg/m and
+  // its moment about y that of a 0.004 x 0.3 m section of that mass.
+  const RigidInertia& plate = scene.bodies[1].inertia;
+  EXPECT_NEAR(plate.mass, 4.0, 1e-12);
+  EXPECT_NEAR(plate.principal.y, 4.0 * (0.004 * 0.004 + 0.3 * 0.3) / 12, 1e-12);
+}
+
 TEST(SceneSetup, FluidUnderABodyAcrossPeriodicEndsIsRemovedAtEveryImage) {
   // Periodic in x and z: boxes across one end, across two (a corner, three images) and inside;
   // the fluid kept must be what a test against each body's nearest image keeps, and the bodies'

@@ -71,10 +71,6 @@ void add_sphere_shells(std::vector<Vec3d>& out, double R, double dp, int shell_l
   }
 }
 
-bool perpendicular(const Vec3d& a, const Vec3d& b) {
-  return std::fabs(dot(a, b)) < 1e-9;
-}
-
 /// Cylinder (axis local x) in 3D: axial layers on the dp grid, centred; layers within
 /// shell_layers dp of a cap are full discs, the others rings near the mantle only.
 std::vector<Vec3d> cylinder_3d(const Shape& s, double dp, int shell_layers) {
@@ -105,10 +101,7 @@ std::vector<Vec3d> body_particles(const Shape& s, double dp, int shell_layers, i
   }
   // 2D: the section by the simulation plane. A sphere's is a disc, and so is a cylinder's
   // when its axis (local x) is normal to the plane; everything else is polygonal.
-  const bool round_section = s.type == ShapeType::Sphere ||
-                             (s.type == ShapeType::Cylinder && perpendicular(plane[0], {1, 0, 0}) &&
-                              perpendicular(plane[1], {1, 0, 0}));
-  if (round_section) {
+  if (round_section_2d(s, plane)) {
     add_disc(out, {}, plane[0], plane[1], s.radius, dp, shell_layers);
     return out;
   }

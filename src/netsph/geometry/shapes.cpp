@@ -101,6 +101,17 @@ Vec3d Shape::nearest_surface_point(const Vec3d& p) const {
   return p;
 }
 
+bool round_section_2d(const Shape& s, const std::vector<Vec3d>& plane) {
+  const auto across = [](const Vec3d& a) { return std::fabs(dot(a, {1, 0, 0})) < 1e-9; };
+  return s.type == ShapeType::Sphere ||
+         (s.type == ShapeType::Cylinder && across(plane[0]) && across(plane[1]));
+}
+
+Shape plane_section_shape(const Shape& s, const std::vector<Vec3d>& plane) {
+  return s.type == ShapeType::Cylinder && round_section_2d(s, plane) ? Shape::sphere(2 * s.radius)
+                                                                     : s;
+}
+
 Vec3d Shape::bounding_half() const {
   switch (type) {
     case ShapeType::Box:

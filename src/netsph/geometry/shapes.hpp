@@ -39,13 +39,22 @@ struct Shape {
   double depth(const Vec3d& p) const { return norm(nearest_surface_point(p) - p); }
   /// Half extents of the bounding box.
   Vec3d bounding_half() const;
-  /// Volume, m^3 (3D) or area of the y = 0 section, m^2 (2D).
+  /// Volume, m^3 (3D) or area of the local y = 0 section, m^2 (2D; see plane_section_shape).
   double measure(int dims) const;
   /// Principal moments of inertia per unit density about the centre (local axes are principal
   /// for every shape here), kg m^2 / (kg/m^3); in 2D only the y component (about the normal
   /// of the plane) is meaningful, per unit depth.
   Vec3d inertia_per_density(int dims) const;
 };
+
+/// 2D: whether the simulation plane cuts s in a disc: a sphere, or a cylinder whose axis (local
+/// x) is normal to the plane. `plane`: the local-frame directions of world x and z.
+bool round_section_2d(const Shape& s, const std::vector<Vec3d>& plane);
+
+/// 2D: a shape whose y = 0 section (the one measure(2) and inertia_per_density(2) take) is the
+/// simulation plane's section of s: a sphere of s's radius where that section is a disc (a
+/// cylinder across the plane), s itself otherwise.
+Shape plane_section_shape(const Shape& s, const std::vector<Vec3d>& plane);
 
 /// The shape as SPH particles resolve it: every dimension at least 2 dp (box half lengths,
 /// cylinder half length and radius, sphere and twine radius at least dp). A body thinner than

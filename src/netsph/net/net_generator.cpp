@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "netsph/core/error.hpp"
+#include "netsph/geometry/shapes.hpp"
 
 namespace netsph {
 namespace {
@@ -36,6 +37,25 @@ bool on_fixed_edge(const NetSpec& spec, int row, int column, int rows, int colum
          (spec.fixed_edges[3] && column == columns - 1);
 }
 
+/// The volume the fluid's pressure acts on: the knot as SPH particles at spacing dp resolve
+/// it (every dimension at least 2 dp), its own volume when dp is 0.
+double resolved_knot_volume(const KnotGeometry& g, double dp) {
+  if (dp <= 0) return g.volume;
+  Shape s;
+  switch (g.shape) {
+    case KnotShape::SquarePlate:
+      s = Shape::box({g.thickness, g.size, g.size});
+      break;
+    case KnotShape::CircularPlate:
+      s = Shape::cylinder(g.size, g.thickness);
+      break;
+    case KnotShape::Sphere:
+      s = Shape::sphere(g.size);
+      break;
+  }
+  return resolvable_shape(s, dp, 3).measure(3);
+}
+
 }  // namespace
 
 NetEnvironment net_environment(const CaseSpec& spec) {
@@ -46,6 +66,7 @@ NetEnvironment net_environment(const CaseSpec& spec) {
     env.knot_buoyancy = true;
   } else if (norm2(spec.fluid.gravity) > 0 || !spec.fluid.structure_gravity) {
     env.knot_buoyancy = false;
+    env.resolved_dp = spec.simulation.dp;
   } else {
     env.gravity = *spec.fluid.structure_gravity;
     env.knot_buoyancy = true;
@@ -119,10 +140,11 @@ NetModel generate_net(const NetSpec& spec, const NetEnvironment& env) {
       k.mass = netting_mass;
       k.constant_force = env.gravity * netting_mass;
       const double netting_volume = netting_mass / spec.material_density;
-      // Resolved knots: the fluid's pressure gives rho_w g V_knot; the rest makes it the
+      // Resolved knots: the fluid's pressure gives rho_w g V_resolved; the rest makes it the
       // netting's buoyancy (NetEnvironment::knot_buoyancy).
       const double buoyant_volume =
-          env.knot_buoyancy ? netting_volume : netting_volume - k.geometry.volume;
+          env.knot_buoyancy ? netting_volume
+                            : netting_volume - resolved_knot_volume(k.geometry, env.resolved_dp);
       k.constant_force -= env.gravity * (env.water_density * buoyant_volume);
       if (row == 0 && sinker.length > 0) {
         const double carried = (edge_column ? 0.5 : 1.0) * net.spacing_across;

@@ -20,11 +20,15 @@ struct NetEnvironment {
   double water_density = 1000;  ///< kg/m^3
   /// Add each knot's buoyancy (rho_w g V of the netting it stands for). False when the knots
   /// are resolved by SPH particles in a fluid with gravity, whose pressure carries a buoyancy
-  /// rho_w g V_knot on the numerical knot's volume; the generator then adds
-  /// rho_w g (V_knot - V_netting) so that the total is the netting's buoyancy (with mesh
+  /// rho_w g V_resolved on the knot as the particles resolve it; the generator then adds
+  /// rho_w g (V_netting - V_resolved) so that the total is the netting's buoyancy (with mesh
   /// grouping the numerical knot holds lambda times the volume of the lambda^2 real elements
   /// it stands for). The sinker, never resolved, always gets its buoyancy.
   bool knot_buoyancy = true;
+  /// The particle spacing that resolves the knots (with knot_buoyancy false), m. A knot is
+  /// resolved at least 2 dp thick (geometry/shapes.hpp, resolvable_shape), and the fluid is
+  /// removed from all of that volume; 0 takes the knot's own volume.
+  double resolved_dp = 0;
 };
 
 /// The environment of a case's nets: a standalone net (no fluid) hangs under fluid.gravity

@@ -69,13 +69,16 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
     body.model = b.model;
     body.slip = b.slip;
     body.inertia.dims = dims;
-    // Fixed and prescribed bodies never use their mass; give them the fluid's so that
-    // reports stay meaningful.
-    const double measure = nominal.measure(dims);
+    // Mass and inertia are those of the body as given, not as resolved (a thickened plate
+    // keeps its mass and radius of gyration), and in 2D those of its section by the plane (a
+    // cylinder across the plane: a disc). Fixed and prescribed bodies never use their mass;
+    // give them the fluid's so that reports stay meaningful.
+    const Shape physical = dims == 2 ? plane_section_shape(nominal, plane) : nominal;
+    const double measure = physical.measure(dims);
     const double density =
         b.mass ? *b.mass / measure : (b.density > 0 ? b.density : spec.fluid.density);
     body.inertia.mass = density * measure;
-    body.inertia.principal = shape.inertia_per_density(dims) * density;
+    body.inertia.principal = physical.inertia_per_density(dims) * density;
     body.state.com = b.center;
     if (dims == 2) body.state.com.y = 0;
     body.state.q = b.orientation;

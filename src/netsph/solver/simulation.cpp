@@ -140,8 +140,19 @@ void Simulation::advance_bodies(bool corrector, double dt) {
 void Simulation::sort_particles(bool mid_step) {
   const std::size_t before = p_.size();
   // Mid-step too: the corrector advances positions from the half step (sph/symplectic.hpp),
-  // so no step-start copy needs the same wrap.
-  grid_.wrap(p_.pos);
+  // so no step-start copy needs the same wrap. But not the buffer particles mid-step: one the
+  // half step carried across the face of a periodic axis has left through its outlet, and the
+  // next step start removes it (open_boundary.hpp), before any wrap; wrapped, it would land
+  // in the inlet's buffer on the far side and come back as fluid. Until then the grid keeps it
+  // in the end cell (GridIndex::key_of clamps on periodic axes).
+  if (!mid_step || scene_.zones.empty()) {
+    grid_.wrap(p_.pos);
+  } else {
+    const auto n = static_cast<std::int64_t>(p_.size());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i)
+      if (p_.kind[i] != ParticleKind::Buffer) p_.pos[i] = grid_.wrapped(p_.pos[i]);
+  }
   grid_.sort(p_.pos, order_);
   if (order_.size() < before) {
     // Dropped: outlet removals (NaN positions) and particles outside the domain (lost). Keep

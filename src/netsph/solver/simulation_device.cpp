@@ -68,6 +68,8 @@ void Simulation::device_step() {
   }
   diag_.open.created += r.created;
   diag_.open.removed += r.removed;
+  diag_.open.entered_fluid += r.entered_fluid;
+  diag_.open.absorbed += r.absorbed;
   diag_.lost_total += r.lost;
   if (r.resorted) ++diag_.resorts;
   diag_.max_speed = r.max_speed;

@@ -7,6 +7,11 @@ bool compute_contacts(const ContactModel& model, const CellGrid& grid, const Int
   contact.assign(v.x.size(), Vec3f{});
   const auto& cells = grid.occupied_cells();
   const auto ncells = static_cast<std::int64_t>(cells.size());
+  // The dashpot acts on the solids' own velocities: a solid under a mirror slip condition
+  // shows the fluid its mirrored velocity (vx), and its own in continuity.
+  const Real* vx = v.continuity_vx();
+  const Real* vy = v.continuity_vy();
+  const Real* vz = v.continuity_vz();
   int any = 0;
 #pragma omp parallel for schedule(dynamic, 64) reduction(max : any)
   for (std::int64_t k = 0; k < ncells; ++k) {
@@ -27,9 +32,8 @@ bool compute_contacts(const ContactModel& model, const CellGrid& grid, const Int
         for (std::uint32_t b = ranges[r].begin; b < ranges[r].end; ++b) {
           const std::int32_t other = v.solid[b];
           if (other == InteractionView::kNotSolid || other == self) continue;
-          acc +=
-              contact_acceleration(model, pa - Vec3f(v.x[b], v.y[b], v.z[b]),
-                                   Vec3f(v.vx[a] - v.vx[b], v.vy[a] - v.vy[b], v.vz[a] - v.vz[b]));
+          acc += contact_acceleration(model, pa - Vec3f(v.x[b], v.y[b], v.z[b]),
+                                      Vec3f(vx[a] - vx[b], vy[a] - vy[b], vz[a] - vz[b]));
         }
       }
       if (acc.x != 0 || acc.y != 0 || acc.z != 0) contact[a] = acc, any = 1;

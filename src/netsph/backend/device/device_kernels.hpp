@@ -370,34 +370,46 @@ NETSPH_HD void device_mdbc_particle(const GridIndex& g, const std::uint32_t* cel
   s.vel[i] = st.vel;
 }
 
+/// What an open-boundary transition did to a particle, for the step's counts.
+enum DeviceOpenEvent : std::uint32_t {
+  kNoOpenEvent = 0,
+  kRemovedEvent = 1,   ///< left through a face
+  kEnteredEvent = 2,   ///< a buffer particle became fluid
+  kAbsorbedEvent = 3,  ///< a fluid particle became an outlet's (or inlet's) buffer particle
+};
+
 /// The open-boundary transition of particle i (boundary/open_boundary.cpp's rules, applied in
-/// place); create[i] = 1 when an inlet must create a buffer particle behind it, removed[i] = 1
-/// when it left through a face (its position becomes NaN, so the sort drops it).
+/// place); create[i] = 1 when an inlet must create a buffer particle behind it; event[i] says
+/// what happened (DeviceOpenEvent). A removed particle's position becomes NaN, so the sort
+/// drops it.
 NETSPH_HD void device_transition_particle(const DeviceState& s, const ZoneGeometry* zones,
                                           std::size_t nzones, std::uint32_t* create,
-                                          std::uint32_t* removed, std::uint32_t i) {
+                                          std::uint32_t* event, std::uint32_t i) {
   std::uint32_t entered = 0;
-  create[i] = 0, removed[i] = 0;
+  create[i] = 0, event[i] = kNoOpenEvent;
   switch (buffer_transition(zones, nzones, s.kind[i], s.group[i], s.pos[i], entered)) {
     case BufferTransition::None:
       break;
     case BufferTransition::ToFluidAndCreate:
       create[i] = 1;
       s.kind[i] = ParticleKind::Fluid;  // the group (its zone) is cleared by the creation
+      event[i] = kEnteredEvent;
       break;
     case BufferTransition::ToFluid:
       s.kind[i] = ParticleKind::Fluid;
       s.group[i] = 0;
+      event[i] = kEnteredEvent;
       break;
     case BufferTransition::Remove: {
       const double nan = std::numeric_limits<double>::quiet_NaN();
       s.pos[i] = Vec3d(nan, nan, nan);
-      removed[i] = 1;
+      event[i] = kRemovedEvent;
       break;
     }
     case BufferTransition::ToBuffer:
       s.kind[i] = ParticleKind::Buffer;
       s.group[i] = entered;
+      event[i] = kAbsorbedEvent;
       break;
   }
 }
@@ -478,7 +490,8 @@ NETSPH_HD Vec3f device_contact_particle(const GridIndex& g, const std::uint32_t*
       const std::int32_t other = device_solid_of(kind, group, b);
       if (other == -1 || other == self) continue;
       const PosPress pb = v.pp[b];
-      const VelRho ua = v.vr[a], ub = v.vr[b];
+      // The solids' own velocities (the continuity velocity; CPU: contact.cpp).
+      const VelRho ua = v.mirrors ? v.cv[a] : v.vr[a], ub = v.mirrors ? v.cv[b] : v.vr[b];
       acc += contact_acceleration(model, pa - Vec3f(pb.x, pb.y, pb.z),
                                   Vec3f(ua.vx - ub.vx, ua.vy - ub.vy, ua.vz - ub.vz));
     }

@@ -144,7 +144,9 @@ class DeviceStepper {
     double moved = predict(dt);
     if (has_bodies_) moved = std::max(moved, place_bodies(true));
     if (moved > s_.max_displacement) {
+      const std::size_t before_resort = n_;
       sort(true);
+      rep.lost += before_resort - n_;  // left the grid in the half step
       rep.resorted = true;
     }
     view(true);
@@ -308,12 +310,12 @@ class DeviceStepper {
 
   /// The work area during the open boundaries' transitions and creations.
   struct OpenArrays {
-    std::uint32_t *create, *removed, *create_at, *removed_at;
+    std::uint32_t *create, *event, *create_at, *flag;
   };
   OpenArrays open_layout(WorkCarver& c) {
     OpenArrays a{};
-    a.create = c.take<std::uint32_t>(), a.removed = c.take<std::uint32_t>();
-    a.create_at = c.take<std::uint32_t>(), a.removed_at = c.take<std::uint32_t>();
+    a.create = c.take<std::uint32_t>(), a.event = c.take<std::uint32_t>();
+    a.create_at = c.take<std::uint32_t>(), a.flag = c.take<std::uint32_t>();
     return a;
   }
 
@@ -329,8 +331,10 @@ class DeviceStepper {
     std::uint32_t* keys = keys_.data();
     std::uint32_t* order = sa.order;
     const bool periodic = g.periodic[0] || g.periodic[1] || g.periodic[2];
+    // Mid-step, buffer particles are not wrapped (Simulation::sort_particles says why).
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      if (periodic) st.pos[i] = g.wrapped(st.pos[i]);
+      if (periodic && !(mid_step && st.kind[i] == ParticleKind::Buffer))
+        st.pos[i] = g.wrapped(st.pos[i]);
       keys[i] = g.key_of(st.pos[i]);
       order[i] = i;
     });
@@ -460,11 +464,14 @@ class DeviceStepper {
     WorkCarver carve(work_.data(), n_);
     const OpenArrays oa = open_layout(carve);
     std::uint32_t* create = oa.create;
-    std::uint32_t* removed = oa.removed;
+    std::uint32_t* event = oa.event;
     Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
-      device_transition_particle(st, geo, nz, create, removed, i);
+      device_transition_particle(st, geo, nz, create, event, i);
     });
-    rep.removed = Exec::exclusive_scan(oa.removed, oa.removed_at, n_);
+    // create_at is free until the creations' scan below.
+    rep.removed = count_events(event, kRemovedEvent, oa.flag, oa.create_at);
+    rep.entered_fluid = count_events(event, kEnteredEvent, oa.flag, oa.create_at);
+    rep.absorbed = count_events(event, kAbsorbedEvent, oa.flag, oa.create_at);
     const std::size_t created = Exec::exclusive_scan(oa.create, oa.create_at, n_);
     rep.created = created;
     if (created == 0) return;
@@ -482,6 +489,14 @@ class DeviceStepper {
     n_ = n + created;
     next_id_ += static_cast<std::uint32_t>(created);
     alloc_work(n_);
+  }
+
+  /// How many particles had open-boundary event `kind`: a scan of its flags (in `flag`, the
+  /// scan into `scan`), not atomics on one counter from a whole inflowing column.
+  std::size_t count_events(const std::uint32_t* event, std::uint32_t kind, std::uint32_t* flag,
+                           std::uint32_t* scan) {
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) { flag[i] = event[i] == kind ? 1 : 0; });
+    return Exec::exclusive_scan(flag, scan, n_);
   }
 
   void buffer_state() {
