@@ -252,9 +252,10 @@ def main(argv):
         return 1
     with open(summary_path) as f:
         summary = json.load(f)
-    case = summary.get("case", {}).get("name", os.path.basename(os.path.abspath(folder)))
+    # A coupled run's summary holds the case as an object, a standalone net run's as its name.
+    case = summary.get("case", {})
     if isinstance(case, dict):
-        case = case.get("name", "")
+        case = case.get("name", os.path.basename(os.path.abspath(folder)))
     out = os.path.join(folder, "plots")
     os.makedirs(out, exist_ok=True)
     written = []

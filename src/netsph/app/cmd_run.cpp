@@ -1,5 +1,6 @@
 #include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -81,13 +82,36 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
 
 namespace {
 
+/// A restart continues the checkpoint's particles, bodies and nets: a --set may change how long
+/// and in what steps it runs, and what it writes, but not the model they were made with (a new
+/// dp would step the old particles with another mass and kernel).
+void check_restart_override(const std::string& set) {
+  const std::string key = set.substr(0, set.find('='));
+  for (const char* allowed : {"simulation.end_time", "simulation.cfl", "simulation.dt_min",
+                              "simulation.dt_max", "simulation.max_lost_fraction"}) {
+    if (key == allowed) return;
+  }
+  if (key.rfind("output.", 0) == 0) return;
+  throw Error("--set " + set,
+              "a restart continues the checkpoint's particles, so it may change only the run's "
+              "length and time stepping (simulation.end_time, cfl, dt_min, dt_max, "
+              "max_lost_fraction) and its outputs ([output] keys); to change '" +
+                  key + "', start a new run");
+}
+
 /// The case of a restart: as its checkpoint recorded it, with the new --set overrides after
 /// the old ones (so that, e.g., simulation.end_time can be raised to run longer).
 CaseSpec restart_case(const CheckpointData& c, const std::vector<std::string>& more,
                       std::vector<std::string>& overrides) {
+  for (const std::string& set : more) check_restart_override(set);
   overrides = recorded_overrides(c);
   overrides.insert(overrides.end(), more.begin(), more.end());
-  return read_case_string(c.text_of("case.toml"), c.text_of("case.source"), overrides);
+  // A case file without simulation.name is named after the file's stem, as when it was read
+  // first (read_case_file); a built-in case after its source.
+  const std::string& source = c.text_of("case.source");
+  const std::string name =
+      source.rfind("builtin:", 0) == 0 ? source : std::filesystem::path(source).stem().string();
+  return read_case_string(c.text_of("case.toml"), source, overrides, name);
 }
 
 int exit_status(const RunReport& r) {
@@ -139,6 +163,11 @@ int run_command(const RunArgs& args) {
                 "give either a case or --restart DIR: a restart reads its case from "
                 "the checkpoint (add --set to change a key, e.g. the end time)");
   }
+  if (restart && !args.out_dir.empty()) {
+    throw Error("--restart",
+                "a restart continues in the folder it restarts (" + args.restart_dir +
+                    "): -o does not apply; copy the folder first to keep the original");
+  }
   CheckpointData checkpoint, record;
   std::vector<std::string> overrides = args.case_choice.overrides;
   CaseSpec spec;
@@ -166,7 +195,11 @@ int run_command(const RunArgs& args) {
                                     : args.out_dir.empty()
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);
-  if (reporting) log_also_to_file(out / "log.txt");
+  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) {
+    throw Error(restart ? "--restart" : "-o",
+                out.string() + " is a file, not a folder: give a folder for the outputs");
+  }
+  if (reporting) log_also_to_file(out / "log.txt", restart);
 
   spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,
                spec.source);

@@ -17,9 +17,9 @@ void log_to_console(bool quiet) {
   spdlog::set_default_logger(logger);
 }
 
-void log_also_to_file(const std::filesystem::path& file) {
+void log_also_to_file(const std::filesystem::path& file, bool append) {
   std::filesystem::create_directories(file.parent_path());
-  auto sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>(file.string(), true);
+  auto sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>(file.string(), !append);
   sink->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");
   sink->set_level(spdlog::level::info);
   spdlog::default_logger()->sinks().push_back(sink);

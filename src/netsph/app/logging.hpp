@@ -6,6 +6,7 @@
 namespace netsph::app {
 
 void log_to_console(bool quiet);
-void log_also_to_file(const std::filesystem::path& file);
+/// append: keep what the file holds (a restart adds to the log of the run it continues).
+void log_also_to_file(const std::filesystem::path& file, bool append = false);
 
 }  // namespace netsph::app

@@ -17,15 +17,18 @@ void log_run_results(const nlohmann::json& summary) {
   for (const auto& g : summary.value("bodies", nlohmann::json::array())) {
     if (!g.contains("force_N")) continue;
     const auto& f = g["force_N"];
+    // 2D: per metre of depth, and the reference area is a length.
+    const std::string unit = g.value("force_unit", "N");
+    const bool per_metre = unit == "N/m";
     std::string cd;
     if (g.contains("cd")) {
-      cd =
-          fmt::format(", Cd {:.4f} (U = {:.4g} m/s, A = {:.4g} m^2)", g["cd"].get<double>(),
-                      g["reference_velocity_m_s"].get<double>(), g["reference_area"].get<double>());
+      cd = fmt::format(", Cd {:.4f} (U = {:.4g} m/s, A = {:.4g} {})", g["cd"].get<double>(),
+                       g["reference_velocity_m_s"].get<double>(), g["reference_area"].get<double>(),
+                       per_metre ? "m" : "m^2");
     }
-    spdlog::info("{} over {}: drag {:.4g} N (force [{:.4g}, {:.4g}, {:.4g}] N){}",
-                 g["group"].get<std::string>(), window_text(g), f[0].get<double>(),
-                 f[0].get<double>(), f[1].get<double>(), f[2].get<double>(), cd);
+    spdlog::info("{} over {}: drag {:.4g} {} (force [{:.4g}, {:.4g}, {:.4g}] {}){}",
+                 g["group"].get<std::string>(), window_text(g), f[0].get<double>(), unit,
+                 f[0].get<double>(), f[1].get<double>(), f[2].get<double>(), unit, cd);
   }
   for (const auto& n : summary.value("nets", nlohmann::json::array())) {
     const auto& b = n["final_bottom_displacement_m"];

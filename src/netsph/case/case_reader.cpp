@@ -157,6 +157,7 @@ CaseSpec CaseReader::read(const std::string& default_name) {
   read_open_boundaries(false);
   read_bodies();
   read_nets();
+  reject_fluid_tables_without_fluid();
   read_current();
   read_probes();
   // Shifting keeps the particle distribution regular where open boundaries add and remove
@@ -264,6 +265,18 @@ void CaseReader::read_simulation(const std::string& default_name) {
     r.fail_value("dt_max", *r.find("dt_max"),
                  fmt::format("must be > simulation.dt_min ({} s) when both are set",
                              format_number(s.dt_min)));
+  }
+}
+
+void CaseReader::reject_fluid_tables_without_fluid() const {
+  if (!spec_.net_only()) return;
+  for (const std::string_view name : {"wall", "inlet", "outlet", "body"}) {
+    const std::vector<const toml::table*> tables = find_array_of_tables(name);
+    if (tables.empty()) continue;
+    throw Error(source_.where(tables[0]->source()),
+                fmt::format("[[{}]] acts on the SPH fluid, and this case has none (no [[fill]]: a "
+                            "standalone net in a uniform [current]); add a [[fill]] or remove it",
+                            name));
   }
 }
 
@@ -629,8 +642,10 @@ CaseSpec read_case_file(const std::filesystem::path& path,
 }
 
 CaseSpec read_case_string(std::string_view toml_text, const std::string& source_name,
-                          const std::vector<std::string>& overrides) {
-  return read_case(toml_text, source_name, overrides, source_name);
+                          const std::vector<std::string>& overrides,
+                          const std::string& default_name) {
+  return read_case(toml_text, source_name, overrides,
+                   default_name.empty() ? source_name : default_name);
 }
 
 }  // namespace netsph

@@ -16,9 +16,11 @@ namespace netsph {
 CaseSpec read_case_file(const std::filesystem::path& path,
                         const std::vector<std::string>& overrides = {});
 
-/// Same, from text; `source_name` is used in error messages (e.g. "builtin:default").
+/// Same, from text; `source_name` is used in error messages (e.g. "builtin:default") and, unless
+/// `default_name` is given, as the name of a case without simulation.name.
 CaseSpec read_case_string(std::string_view toml_text, const std::string& source_name,
-                          const std::vector<std::string>& overrides = {});
+                          const std::vector<std::string>& overrides = {},
+                          const std::string& default_name = {});
 
 /// A whole file as text; throws netsph::Error naming the file when it cannot be read.
 std::string read_file_text(const std::filesystem::path& path);

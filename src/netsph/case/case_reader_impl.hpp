@@ -39,6 +39,10 @@ void reject_foreign_parameter(const TomlTableReader& r, std::string_view key,
 /// printed as 0.060000000000000005.
 std::string format_derived(double v);
 
+/// A name that becomes a file name (a probe's probes/<name>.csv, a net's <name>.xdmf): letters,
+/// digits, '_', '-' and '.', not "." or "..".
+bool plain_file_name(const std::string& name);
+
 inline constexpr std::array<std::string_view, 6> kFaceNames = {"xmin", "xmax", "ymin",
                                                                "ymax", "zmin", "zmax"};
 inline constexpr std::string_view kPlaneReason = "2D runs in the x-z plane (z up)";
@@ -147,6 +151,9 @@ class CaseReader {
   ProbeSpec read_probe(const toml::table& table, int number) const;
   /// dp may be left out of a standalone net case (nets, no fluid); everything else needs it.
   void require_dp() const;
+  /// A standalone net case (nets, no fluid) with walls, open boundaries or bodies: an error,
+  /// not tables silently left out of its run.
+  void reject_fluid_tables_without_fluid() const;
 
   struct NamedEntry {
     std::string name;

@@ -78,7 +78,11 @@ NetSpec CaseReader::read_net(const toml::table& table, int number) const {
     r.fail_table("nets need simulation.dimensions = 3 (a net is a surface of knots and twines)");
   }
   net.name = r.string("name", fmt::format("net{}", number));
-  if (net.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
+  if (!plain_file_name(net.name)) {
+    r.fail_value("name", *r.find("name"),
+                 "must be a plain file name: letters, digits, '_', '-' and '.' (the net writes "
+                 "<name>.xdmf, net_<name>_<n>.vtk and knots_<name>.csv)");
+  }
   net.center = read_position(r, "center", "position [x, y, z] of the outline's centre, m");
   read_net_orientation(r, net);
   net.width = r.required_number("width", NumberRule::positive("m"), "outline width, m, > 0");

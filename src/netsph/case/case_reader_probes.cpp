@@ -29,7 +29,10 @@ const std::vector<TypeKeys>& type_keys() {
   return keys;
 }
 
-/// A probe writes probes/<name>.csv: keep the name a plain file name.
+constexpr double kMaxProbePoints = 1e6;
+
+}  // namespace
+
 bool plain_file_name(const std::string& name) {
   if (name.empty() || name == "." || name == "..") return false;
   for (const char c : name) {
@@ -39,10 +42,6 @@ bool plain_file_name(const std::string& name) {
   }
   return true;
 }
-
-constexpr double kMaxProbePoints = 1e6;
-
-}  // namespace
 
 void CaseReader::read_probes() {
   const std::vector<const toml::table*> tables = find_array_of_tables("probe");

@@ -50,13 +50,23 @@ GroupLoad group_load(const Simulation& sim, const ForceGroup& g) {
 }
 
 BodyForceRecorder::BodyForceRecorder(const Simulation& sim, double window_start, double window_end)
-    : groups_(force_groups(sim)), t0_(window_start), t1_(window_end), sums_(groups_.size()) {}
+    : groups_(force_groups(sim)),
+      t0_(window_start),
+      t1_(window_end),
+      dims_(sim.model().dims),
+      sums_(groups_.size()) {}
+
+ForceUnits force_units(int dims) {
+  // 2D particles carry mass per metre of depth (rho dp^2): forces per metre, moments N m/m.
+  return dims == 2 ? ForceUnits{"N/m", "N"} : ForceUnits{"N", "N m"};
+}
 
 std::vector<CsvColumn> BodyForceRecorder::series_columns() const {
   std::vector<CsvColumn> cols;
   for (const auto& g : groups_) {
-    for (const char* c : {"Fx", "Fy", "Fz"}) cols.push_back({g.name + "_" + c, "N"});
-    for (const char* c : {"Mx", "My", "Mz"}) cols.push_back({g.name + "_" + c, "N m"});
+    const ForceUnits u = force_units(dims_);
+    for (const char* c : {"Fx", "Fy", "Fz"}) cols.push_back({g.name + "_" + c, u.force});
+    for (const char* c : {"Mx", "My", "Mz"}) cols.push_back({g.name + "_" + c, u.moment});
     if (g.reference_velocity) cols.push_back({g.name + "_Cd", ""});
   }
   return cols;
@@ -95,8 +105,11 @@ nlohmann::json BodyForceRecorder::summary() const {
     j["averaged_over_s"] = weight_;
     if (weight_ > 0) {
       const Vec3d f = sums_[k].force / weight_, m = sums_[k].moment / weight_;
+      // The keys keep their 3D names; in 2D the values are per metre of depth (the units).
       j["force_N"] = {f.x, f.y, f.z};
       j["moment_N_m"] = {m.x, m.y, m.z};
+      j["force_unit"] = force_units(dims_).force;
+      j["moment_unit"] = force_units(dims_).moment;
       if (g.reference_velocity) {
         j["cd"] = sums_[k].cd / weight_;
         j["reference_velocity_m_s"] = *g.reference_velocity;
@@ -131,13 +144,13 @@ void BodyForceRecorder::restore(const std::vector<double>& s) {
   weight_ = s.back();
 }
 
-std::vector<CsvColumn> body_state_columns() {
-  return {{"time", "s"},      {"body", ""},  {"x", "m"},          {"y", "m"},
-          {"z", "m"},         {"vx", "m/s"}, {"vy", "m/s"},       {"vz", "m/s"},
-          {"qw", ""},         {"qx", ""},    {"qy", ""},          {"qz", ""},
-          {"Fx", "N"},        {"Fy", "N"},   {"Fz", "N"},         {"Mx", "N m"},
-          {"My", "N m"},      {"Mz", "N m"}, {"contact_Fx", "N"}, {"contact_Fy", "N"},
-          {"contact_Fz", "N"}};
+std::vector<CsvColumn> body_state_columns(int dims) {
+  const std::string f = force_units(dims).force, m = force_units(dims).moment;
+  return {{"time", "s"},    {"body", ""},  {"x", "m"},    {"y", "m"},        {"z", "m"},
+          {"vx", "m/s"},    {"vy", "m/s"}, {"vz", "m/s"}, {"qw", ""},        {"qx", ""},
+          {"qy", ""},       {"qz", ""},    {"Fx", f},     {"Fy", f},         {"Fz", f},
+          {"Mx", m},        {"My", m},     {"Mz", m},     {"contact_Fx", f}, {"contact_Fy", f},
+          {"contact_Fz", f}};
 }
 
 void append_body_rows(const Simulation& sim, CsvSeries& csv) {

@@ -3,7 +3,7 @@
 //   series.csv  per force group (bodies sharing a `group` name): the fluid's force Fx Fy Fz [N]
 //               and moment Mx My Mz [N m] about the group's reference point (the mean of its
 //               bodies' centres at the start), and Cd = Fx / (0.5 rho0 U^2 A) when the case gives
-//               U and A (per unit depth in 2D);
+//               U and A; in 2D forces and moments are per metre of depth [N/m], [N] (force_units);
 //   bodies.csv  one row per body per series interval: centre, velocity, orientation, fluid
 //               and contact force;
 //   summary.json the time averages of the group values over the case's force window.
@@ -54,12 +54,21 @@ class BodyForceRecorder {
  private:
   std::vector<ForceGroup> groups_;
   double t0_, t1_;
+  int dims_;
   double weight_ = 0;
   std::vector<GroupLoad> sums_;
 };
 
 /// Columns and one row per body for bodies.csv.
-std::vector<CsvColumn> body_state_columns();
+/// Columns of bodies.csv; forces per metre of depth in 2D.
+std::vector<CsvColumn> body_state_columns(int dims);
+
+/// Units of body forces and moments: N and N m in 3D; per metre of depth in 2D (N/m, N).
+struct ForceUnits {
+  const char* force;
+  const char* moment;
+};
+ForceUnits force_units(int dims);
 void append_body_rows(const Simulation& sim, CsvSeries& csv);
 
 }  // namespace netsph

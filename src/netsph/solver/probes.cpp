@@ -132,7 +132,7 @@ std::vector<double> ProbeRecorder::state() const {
   return s;
 }
 
-void ProbeRecorder::restore(const std::vector<double>& s) {
+void ProbeRecorder::restore(const std::vector<double>& s, bool keep_means) {
   std::size_t need = 1;
   for (const auto& pr : probes_) need += 1 + 6 * pr->sums.size();
   if (s.size() != need) throw Error("checkpoint", "the probes differ");
@@ -141,8 +141,10 @@ void ProbeRecorder::restore(const std::vector<double>& s) {
   for (auto& pr : probes_) {
     pr->next_write = s[i++];
     for (ProbeAverage& a : pr->sums) {
-      a.velocity = {s[i], s[i + 1], s[i + 2]};
-      a.pressure = s[i + 3], a.coverage = s[i + 4], a.samples = static_cast<int>(s[i + 5]);
+      if (keep_means) {
+        a.velocity = {s[i], s[i + 1], s[i + 2]};
+        a.pressure = s[i + 3], a.coverage = s[i + 4], a.samples = static_cast<int>(s[i + 5]);
+      }
       i += 6;
     }
   }

@@ -58,7 +58,9 @@ class ProbeRecorder {
 
   /// The running sums and next sampling times, for a checkpoint and a restart.
   std::vector<double> state() const;
-  void restore(const std::vector<double>& state);
+  /// With keep_means false only the sampling schedule continues: the means start afresh (a
+  /// restart whose averaging window moved).
+  void restore(const std::vector<double>& state, bool keep_means = true);
 
  private:
   struct Probe;

@@ -6,6 +6,8 @@
 #include <optional>
 #include <sstream>
 
+#include <spdlog/spdlog.h>
+
 #include "netsph/core/error.hpp"
 
 namespace netsph {
@@ -68,10 +70,12 @@ std::optional<double> resume_time(const CheckpointData* c) {
 RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots,
                        const CheckpointData* resume)
     : dir_(std::move(dir)),
-      forces_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
-      nets_(sim, force_window(sim.spec())[0], force_window(sim.spec())[1]),
-      probes_((std::filesystem::create_directories(dir_), sim), dir_, force_window(sim.spec())[0],
-              force_window(sim.spec())[1], resume_time(resume)),
+      window_(force_window(sim.spec())),
+      end_time_(sim.spec().simulation.end_time),
+      forces_(sim, window_[0], window_[1]),
+      nets_(sim, window_[0], window_[1]),
+      probes_((std::filesystem::create_directories(dir_), sim), dir_, window_[0], window_[1],
+              resume_time(resume)),
       series_(resume
                   ? CsvSeries(dir_ / "series.csv",
                               with_force_columns(series_columns(sim.model().dims), forces_, sim),
@@ -85,9 +89,11 @@ RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool sn
   if (snapshots)
     snapshots_ = std::make_unique<SnapshotWriter>(dir_, "particles", resume != nullptr);
   if (!sim.bodies().empty()) {
-    bodies_csv_ = resume ? std::make_unique<CsvSeries>(dir_ / "bodies.csv", body_state_columns(),
+    bodies_csv_ = resume ? std::make_unique<CsvSeries>(dir_ / "bodies.csv",
+                                                       body_state_columns(sim.model().dims),
                                                        *resume_time(resume))
-                         : std::make_unique<CsvSeries>(dir_ / "bodies.csv", body_state_columns());
+                         : std::make_unique<CsvSeries>(dir_ / "bodies.csv",
+                                                       body_state_columns(sim.model().dims));
   }
   snapshot_every_ = snapshot_interval(sim.spec());
   series_every_ = series_interval(sim.spec());
@@ -100,6 +106,8 @@ void RunOutputs::save_state(CheckpointData& c) const {
   c.f64["outputs.next"] = {next_snapshot_, next_series_, static_cast<double>(last_snapshot_step_),
                            static_cast<double>(last_series_step_)};
   c.text["outputs.snapshots"] = snapshots_ ? snapshots_->entries_text() : "";
+  c.f64["outputs.net_times"] = net_times_;
+  c.f64["outputs.window"] = {window_[0], window_[1], end_time_};
   c.f64["outputs.forces"] = forces_.state();
   c.f64["outputs.nets"] = nets_.state();
   c.f64["outputs.probes"] = probes_.state();
@@ -111,27 +119,50 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
   next_snapshot_ = next[0], next_series_ = next[1];
   last_snapshot_step_ = static_cast<std::int64_t>(next[2]);
   last_series_step_ = static_cast<std::int64_t>(next[3]);
-  forces_.restore(c.reals("outputs.forces"));
-  nets_.restore(c.reals("outputs.nets"));
-  probes_.restore(c.reals("outputs.probes"));
-  if (!snapshots_) return;
-  const std::string& entries = c.text_of("outputs.snapshots");
-  snapshots_->resume(entries);
-  // The nets' VTK files go with the particle snapshots: net_<net>_<snapshot index>.vtk.
-  std::vector<double> times;
-  std::istringstream in(entries);
-  std::string file;
-  double t;
-  std::int64_t step;
-  std::size_t n;
-  while (in >> file >> t >> step >> n) times.push_back(t);
+  // The averages go on only over the window they were summed over: the same window, or one
+  // that starts where it did and ends later when the first run's window reached its end (a
+  // longer run with output.force_window extended; the one step that ended the first run, just
+  // past its end, is not in the sums). A restart that moves the window otherwise (a longer
+  // end_time moves the default, the run's second half) starts the means afresh, so they cover
+  // the new window from the restart on. Checkpoints that did not record the window continue.
+  const auto saved = c.f64.find("outputs.window");
+  bool same_window = true;
+  if (saved != c.f64.end() && saved->second.size() == 3) {
+    const double w0 = saved->second[0], w1 = saved->second[1], first_end = saved->second[2];
+    same_window = (w0 == window_[0] && w1 == window_[1]) ||
+                  (w0 == window_[0] && w1 >= first_end && window_[1] >= w1);
+    if (!same_window && window_[0] < sim.time()) {
+      spdlog::warn(
+          "the averaging window moved from [{:.6g}, {:.6g}] s to [{:.6g}, {:.6g}] s on restart: "
+          "the means of forces, nets and probes cover only [{:.6g}, {:.6g}] s, after the "
+          "restart (set output.force_window to keep the first run's window)",
+          w0, w1, window_[0], window_[1], sim.time(), window_[1]);
+    }
+  }
+  if (same_window) {
+    forces_.restore(c.reals("outputs.forces"));
+    nets_.restore(c.reals("outputs.nets"));
+  }
+  probes_.restore(c.reals("outputs.probes"), same_window);
+  if (snapshots_) snapshots_->resume(c.text_of("outputs.snapshots"));
+  // The nets' shapes written so far (net_<net>_<index>.vtk): their times, or in checkpoints
+  // that did not record them those of the particle snapshots they went with.
+  if (const auto saved_times = c.f64.find("outputs.net_times"); saved_times != c.f64.end()) {
+    net_times_ = saved_times->second;
+  } else if (snapshots_) {
+    std::istringstream in(c.text_of("outputs.snapshots"));
+    std::string file;
+    double t;
+    std::int64_t step;
+    std::size_t n;
+    while (in >> file >> t >> step >> n) net_times_.push_back(t);
+  }
   for (std::size_t k = 0; k < sim.nets().size(); ++k) {
     std::vector<std::pair<std::string, double>> list;
-    for (std::size_t i = 0; i < times.size(); ++i)
-      list.emplace_back("net_" + sim.nets()[k].model.name + "_" + std::to_string(i) + ".vtk",
-                        times[i]);
+    for (std::size_t i = 0; i < net_times_.size(); ++i)
+      list.emplace_back(net_shape_file(sim.nets()[k], i), net_times_[i]);
     net_vtk_[k].reset(std::move(list));
-    net_xdmf_[k].resume(times.size());
+    net_xdmf_[k].resume(net_times_.size());
   }
 }
 
@@ -154,23 +185,31 @@ void RunOutputs::write_snapshot(const Simulation& sim, OutputParticles& particle
   });
   out.finish();
   last_snapshot_step_ = sim.steps();
-  write_net_files(sim, false);
+  write_net_shapes(sim);
 }
 
-void RunOutputs::write_net_files(const Simulation& sim, bool final) {
+std::string RunOutputs::net_shape_file(const CoupledNet& net, std::size_t index) {
+  return "net_" + net.model.name + "_" + std::to_string(index) + ".vtk";
+}
+
+void RunOutputs::write_net_shapes(const Simulation& sim) {
   const auto& nets = sim.nets();
+  if (nets.empty()) return;
   for (std::size_t n = 0; n < nets.size(); ++n) {
     const CoupledNet& net = nets[n];
-    if (final) {
-      write_knots_csv(dir_ / ("knots_" + net.model.name + ".csv"), net.model, net.initial);
-      write_profile_csv(dir_ / ("profile_" + net.model.name + ".csv"), net.model, net.initial);
-      continue;
-    }
-    const std::string file =
-        "net_" + net.model.name + "_" + std::to_string(snapshots_->count() - 1) + ".vtk";
+    const std::string file = net_shape_file(net, net_times_.size());
     write_net_vtk(dir_ / file, net.model, net.initial);
     net_vtk_[n].add(file, sim.time());
     net_xdmf_[n].add(net.model, net.initial, sim.time());
+  }
+  net_times_.push_back(sim.time());
+  last_snapshot_step_ = sim.steps();
+}
+
+void RunOutputs::write_net_tables(const Simulation& sim) {
+  for (const CoupledNet& net : sim.nets()) {
+    write_knots_csv(dir_ / ("knots_" + net.model.name + ".csv"), net.model, net.initial);
+    write_profile_csv(dir_ / ("profile_" + net.model.name + ".csv"), net.model, net.initial);
   }
 }
 
@@ -208,8 +247,13 @@ void RunOutputs::write_series_row(const Simulation& sim, OutputParticles& partic
 void RunOutputs::maybe_write(const Simulation& sim, OutputParticles& particles, double wall_s) {
   // A small tolerance so that round-off in the accumulated time does not skip an output.
   const double t = sim.time() * (1 + 1e-12);
-  if (snapshots_ && t >= next_snapshot_) {
-    write_snapshot(sim, particles);
+  // Without particle snapshots the nets' shapes still go out at the snapshot times.
+  if ((snapshots_ || !sim.nets().empty()) && t >= next_snapshot_) {
+    if (snapshots_) {
+      write_snapshot(sim, particles);
+    } else {
+      write_net_shapes(sim);
+    }
     while (next_snapshot_ <= t) next_snapshot_ += snapshot_every_;
   }
   if (t >= next_series_) {
@@ -219,9 +263,15 @@ void RunOutputs::maybe_write(const Simulation& sim, OutputParticles& particles, 
 }
 
 void RunOutputs::write_final(const Simulation& sim, OutputParticles& particles, double wall_s) {
-  if (snapshots_ && last_snapshot_step_ != sim.steps()) write_snapshot(sim, particles);
+  if (last_snapshot_step_ != sim.steps()) {
+    if (snapshots_) {
+      write_snapshot(sim, particles);
+    } else {
+      write_net_shapes(sim);
+    }
+  }
   if (last_series_step_ != sim.steps()) write_series_row(sim, particles, wall_s);
-  write_net_files(sim, true);
+  write_net_tables(sim);
   probes_.write_means();
 }
 

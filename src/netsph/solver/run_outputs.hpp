@@ -7,6 +7,7 @@
 //                                     coupled nets
 //   probes/<name>.csv, probes/<name>_mean.csv   velocity probes (solver/probes.hpp)
 //   summary.json                      the run as a whole (rewritten atomically, also on failure)
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -60,11 +61,18 @@ class RunOutputs {
 
  private:
   void write_snapshot(const Simulation& sim, OutputParticles& particles);
-  void write_net_files(const Simulation& sim, bool final);
+  /// The nets' shapes now (net_<net>_<index>.vtk, <net>.vtk.series, <net>.xdmf): with every
+  /// particle snapshot, or at the snapshot times when snapshots are off.
+  void write_net_shapes(const Simulation& sim);
+  /// The nets' knot and profile tables, at the end.
+  void write_net_tables(const Simulation& sim);
+  static std::string net_shape_file(const CoupledNet& net, std::size_t index);
   void write_series_row(const Simulation& sim, OutputParticles& particles, double wall_s);
   void restore_state(const Simulation& sim, const CheckpointData& c);
 
   std::filesystem::path dir_;
+  std::array<double, 2> window_;  ///< the averaging window (force_window), before its users
+  double end_time_;               ///< the run's end, s (a restart compares windows with it)
   std::unique_ptr<SnapshotWriter> snapshots_;
   BodyForceRecorder forces_;  // before series_: it adds series columns
   NetRecorder nets_;
@@ -75,7 +83,8 @@ class RunOutputs {
   std::vector<NetXdmfSeries> net_xdmf_;
   double snapshot_every_ = 0, series_every_ = 0;
   double next_snapshot_ = 0, next_series_ = 0;
-  std::int64_t last_snapshot_step_ = -1, last_series_step_ = -1;
+  std::int64_t last_snapshot_step_ = -1, last_series_step_ = -1;  ///< snapshot: or net shapes
+  std::vector<double> net_times_;  ///< the times of the nets' shapes written
 };
 
 /// Intervals after defaults: snapshot_every 0 -> end_time / 50; series_every 0 -> snapshot / 10.

@@ -303,10 +303,26 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
                           x.z >= scene.domain_min.z && x.z < scene.domain_max.z &&
                           (dims == 2 || (x.y >= scene.domain_min.y && x.y < scene.domain_max.y));
       if (!inside) {
-        throw Error(spec.source,
-                    fmt::format("a {} particle at ({:.4g}, {:.4g}, {:.4g}) m lies outside "
-                                "[domain]; enlarge the domain or move the {}",
-                                kind_name(p.kind[i]), x.x, x.y, x.z, kind_name(p.kind[i])));
+        // Name the wall or body (its table's line) and the extent the domain must hold: a
+        // [domain] equal to a tank's box leaves the wall layers outside it.
+        std::string where = spec.source, what = kind_name(p.kind[i]);
+        if (p.kind[i] == ParticleKind::Wall && p.group[i] < spec.walls.size()) {
+          where = spec.walls[p.group[i]].where.str();
+          what = "wall '" + spec.walls[p.group[i]].name + "'";
+        } else if (p.kind[i] == ParticleKind::Body && p.group[i] < spec.bodies.size()) {
+          where = spec.bodies[p.group[i]].where.str();
+          what = "body '" + spec.bodies[p.group[i]].name + "'";
+        }
+        throw Error(where,
+                    fmt::format("a particle of {} at ({:.4g}, {:.4g}, {:.4g}) m lies outside "
+                                "[domain] ({:.4g}, {:.4g}, {:.4g}) .. ({:.4g}, {:.4g}, {:.4g}) m; "
+                                "the case's particles (wall layers included) span ({:.4g}, "
+                                "{:.4g}, {:.4g}) .. ({:.4g}, {:.4g}, {:.4g}) m: enlarge the "
+                                "domain to hold them, or move the {}",
+                                what, x.x, x.y, x.z, scene.domain_min.x, scene.domain_min.y,
+                                scene.domain_min.z, scene.domain_max.x, scene.domain_max.y,
+                                scene.domain_max.z, whole_lo.x, whole_lo.y, whole_lo.z, whole_hi.x,
+                                whole_hi.y, whole_hi.z, kind_name(p.kind[i])));
       }
     }
   } else {
