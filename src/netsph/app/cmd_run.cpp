@@ -86,7 +86,9 @@ namespace {
 /// and in what steps it runs, and what it writes, but not the model they were made with (a new
 /// dp would step the old particles with another mass and kernel).
 void check_restart_override(const std::string& set) {
-  const std::string key = set.substr(0, set.find('='));
+  std::string key;  // the dotted key without the blanks --set allows around its parts
+  for (const char c : set.substr(0, set.find('=')))
+    if (c != ' ' && c != '\t') key += c;
   for (const char* allowed : {"simulation.end_time", "simulation.cfl", "simulation.dt_min",
                               "simulation.dt_max", "simulation.max_lost_fraction"}) {
     if (key == allowed) return;
