@@ -61,9 +61,16 @@ std::vector<CsvColumn> with_force_columns(std::vector<CsvColumn> cols,
 }  // namespace
 
 namespace {
+/// The time up to which a restart keeps the rows of series.csv and bodies.csv: the checkpoint's,
+/// or just before it when the run that wrote it ended with a row of its own there (an end or a
+/// stop off the series schedule, RunOutputs::write_final), which the run continued past it
+/// would not have written.
 std::optional<double> resume_time(const CheckpointData* c) {
   if (!c) return {};
-  return c->real("sim.time");
+  const double t = c->real("sim.time");
+  const auto extra = c->f64.find("outputs.final_extra");
+  const bool final_row = extra != c->f64.end() && extra->second.size() == 2 && extra->second[0];
+  return final_row ? t * (1 - 2e-8) : t;  // CsvSeries keeps rows up to 1e-8 past it
 }
 }  // namespace
 
@@ -107,6 +114,7 @@ void RunOutputs::save_state(CheckpointData& c) const {
                            static_cast<double>(last_series_step_)};
   c.text["outputs.snapshots"] = snapshots_ ? snapshots_->entries_text() : "";
   c.f64["outputs.net_times"] = net_times_;
+  c.f64["outputs.final_extra"] = {final_row_ ? 1.0 : 0.0, final_shapes_ ? 1.0 : 0.0};
   c.f64["outputs.window"] = {window_[0], window_[1], end_time_};
   c.f64["outputs.forces"] = forces_.state();
   c.f64["outputs.nets"] = nets_.state();
@@ -144,7 +152,23 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
     nets_.restore(c.reals("outputs.nets"));
   }
   probes_.restore(c.reals("outputs.probes"), same_window);
-  if (snapshots_) snapshots_->resume(c.text_of("outputs.snapshots"));
+  // A snapshot (and the nets' shapes) that the end or stop of the first run wrote off the
+  // snapshot schedule is not one the continued run would have written: dropped, and its
+  // index written over by the next.
+  const auto extra = c.f64.find("outputs.final_extra");
+  const bool final_shapes =
+      extra != c.f64.end() && extra->second.size() == 2 && extra->second[1] != 0;
+  std::string entries = c.text_of("outputs.snapshots");
+  if (final_shapes && snapshots_) {
+    std::vector<std::string> lines;
+    std::istringstream in(entries);
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty()) lines.push_back(line);
+    if (!lines.empty()) lines.pop_back();
+    entries.clear();
+    for (const std::string& line : lines) entries += line + "\n";
+  }
+  if (snapshots_) snapshots_->resume(entries);
   // The nets' shapes written so far (net_<net>_<index>.vtk): their times, or in checkpoints
   // that did not record them those of the particle snapshots they went with.
   if (const auto saved_times = c.f64.find("outputs.net_times"); saved_times != c.f64.end()) {
@@ -157,6 +181,7 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
     std::size_t n;
     while (in >> file >> t >> step >> n) net_times_.push_back(t);
   }
+  if (final_shapes && !net_times_.empty() && !sim.nets().empty()) net_times_.pop_back();
   for (std::size_t k = 0; k < sim.nets().size(); ++k) {
     std::vector<std::pair<std::string, double>> list;
     for (std::size_t i = 0; i < net_times_.size(); ++i)
@@ -263,14 +288,20 @@ void RunOutputs::maybe_write(const Simulation& sim, OutputParticles& particles, 
 }
 
 void RunOutputs::write_final(const Simulation& sim, OutputParticles& particles, double wall_s) {
+  // What is written here is off the schedules: a checkpoint after it says so (final_row_,
+  // final_shapes_), so that a restart drops it.
   if (last_snapshot_step_ != sim.steps()) {
+    final_shapes_ = snapshots_ || !sim.nets().empty();
     if (snapshots_) {
       write_snapshot(sim, particles);
     } else {
       write_net_shapes(sim);
     }
   }
-  if (last_series_step_ != sim.steps()) write_series_row(sim, particles, wall_s);
+  if (last_series_step_ != sim.steps()) {
+    write_series_row(sim, particles, wall_s);
+    final_row_ = true;
+  }
   write_net_tables(sim);
   probes_.write_means();
 }

@@ -85,6 +85,8 @@ class RunOutputs {
   double next_snapshot_ = 0, next_series_ = 0;
   std::int64_t last_snapshot_step_ = -1, last_series_step_ = -1;  ///< snapshot: or net shapes
   std::vector<double> net_times_;  ///< the times of the nets' shapes written
+  /// write_final wrote a series row / a snapshot or net shapes off their schedules.
+  bool final_row_ = false, final_shapes_ = false;
 };
 
 /// Intervals after defaults: snapshot_every 0 -> end_time / 50; series_every 0 -> snapshot / 10.
