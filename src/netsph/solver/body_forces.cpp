@@ -108,8 +108,9 @@ nlohmann::json BodyForceRecorder::summary() const {
       // The keys keep their 3D names; in 2D the values are per metre of depth (the units).
       j["force_N"] = {f.x, f.y, f.z};
       j["moment_N_m"] = {m.x, m.y, m.z};
-      j["force_unit"] = force_units(dims_).force;
-      j["moment_unit"] = force_units(dims_).moment;
+      const ForceUnits u = force_units(dims_);
+      j["force_unit"] = u.force;
+      j["moment_unit"] = u.moment;
       if (g.reference_velocity) {
         j["cd"] = sums_[k].cd / weight_;
         j["reference_velocity_m_s"] = *g.reference_velocity;

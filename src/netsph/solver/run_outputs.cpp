@@ -61,6 +61,13 @@ std::vector<CsvColumn> with_force_columns(std::vector<CsvColumn> cols,
 }  // namespace
 
 namespace {
+/// Whether the end of the run that wrote checkpoint c wrote, off their schedules, a series row
+/// (which = 0) or a snapshot and the nets' shapes (which = 1): RunOutputs::write_final.
+bool final_extra(const CheckpointData& c, int which) {
+  const auto extra = c.f64.find("outputs.final_extra");
+  return extra != c.f64.end() && extra->second.size() == 2 && extra->second[which] != 0;
+}
+
 /// The time up to which a restart keeps the rows of series.csv and bodies.csv: the checkpoint's,
 /// or just before it when the run that wrote it ended with a row of its own there (an end or a
 /// stop off the series schedule, RunOutputs::write_final), which the run continued past it
@@ -68,9 +75,7 @@ namespace {
 std::optional<double> resume_time(const CheckpointData* c) {
   if (!c) return {};
   const double t = c->real("sim.time");
-  const auto extra = c->f64.find("outputs.final_extra");
-  const bool final_row = extra != c->f64.end() && extra->second.size() == 2 && extra->second[0];
-  return final_row ? t * (1 - 2e-8) : t;  // CsvSeries keeps rows up to 1e-8 past it
+  return final_extra(*c, 0) ? t * (1 - 2e-8) : t;  // CsvSeries keeps rows up to 1e-8 past it
 }
 }  // namespace
 
@@ -155,33 +160,26 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
   // A snapshot (and the nets' shapes) that the end or stop of the first run wrote off the
   // snapshot schedule is not one the continued run would have written: dropped, and its
   // index written over by the next.
-  const auto extra = c.f64.find("outputs.final_extra");
-  const bool final_shapes =
-      extra != c.f64.end() && extra->second.size() == 2 && extra->second[1] != 0;
-  std::string entries = c.text_of("outputs.snapshots");
-  if (final_shapes && snapshots_) {
-    std::vector<std::string> lines;
-    std::istringstream in(entries);
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty()) lines.push_back(line);
-    if (!lines.empty()) lines.pop_back();
-    entries.clear();
-    for (const std::string& line : lines) entries += line + "\n";
+  const bool final_shapes = final_extra(c, 1);
+  std::string entries = c.text_of("outputs.snapshots");  // a line per snapshot
+  if (final_shapes && !entries.empty()) {
+    const auto cut = entries.find_last_of('\n', entries.size() - 2);
+    entries.erase(cut == std::string::npos ? 0 : cut + 1);
   }
   if (snapshots_) snapshots_->resume(entries);
   // The nets' shapes written so far (net_<net>_<index>.vtk): their times, or in checkpoints
   // that did not record them those of the particle snapshots they went with.
   if (const auto saved_times = c.f64.find("outputs.net_times"); saved_times != c.f64.end()) {
     net_times_ = saved_times->second;
+    if (final_shapes && !net_times_.empty()) net_times_.pop_back();
   } else if (snapshots_) {
-    std::istringstream in(c.text_of("outputs.snapshots"));
+    std::istringstream in(entries);
     std::string file;
     double t;
     std::int64_t step;
     std::size_t n;
     while (in >> file >> t >> step >> n) net_times_.push_back(t);
   }
-  if (final_shapes && !net_times_.empty() && !sim.nets().empty()) net_times_.pop_back();
   for (std::size_t k = 0; k < sim.nets().size(); ++k) {
     std::vector<std::pair<std::string, double>> list;
     for (std::size_t i = 0; i < net_times_.size(); ++i)
