@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "case_runs.hpp"
+#include "netsph/backend/cpu/probe_pass.hpp"
+#include "netsph/net/current_loads.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
 
 namespace netsph {
@@ -16,7 +18,10 @@ namespace {
 // One knot on one twine (cases/net_tethered_knot.toml): over the second half of the run the
 // time averages of the forces on the free knot balance, fluid + twine + weight less buoyancy
 // = 0 within 2% of the fluid force, and the twine points where they say: its angle from the
-// vertical is atan(drag / (submerged weight - lift)).
+// vertical is atan(drag / (submerged weight - lift)). The fluid force is the resolved one on
+// the knot plus the modelled drag of its sinker bar (0.1 m x 10 mm): cylinder drag on the
+// water's velocity sampled along the bar, which is the fluid's there (sampled again with the
+// probes' sampler at the end), and which beside the plate runs faster than the current.
 TEST(NetCoupling, TetheredKnotSettlesWhereTwineBalancesFluidForce) {
   Simulation sim(test::load_case("net_tethered_knot.toml"));
   ASSERT_EQ(sim.nets().size(), 1u);
@@ -41,7 +46,7 @@ TEST(NetCoupling, TetheredKnotSettlesWhereTwineBalancesFluidForce) {
   }
   EXPECT_GT(dt_smallest, 0.9 * dt_first);
   const Vec3d v0 = sim.bodies()[net.first_body + free_knot].state.vel;
-  Vec3d fluid{}, twine{}, offset{};
+  Vec3d fluid{}, twine{}, offset{}, sinker{};
   double weight_sum = 0;
   std::vector<Vec3d> twine_now;
   while (sim.time() < t1) {
@@ -50,12 +55,41 @@ TEST(NetCoupling, TetheredKnotSettlesWhereTwineBalancesFluidForce) {
     NetModel model = sim.nets()[0].model;  // the knots as the corrector left them
     KnotSpringSolver solver(model);
     solver.twine_forces(twine_now);
-    fluid += sim.bodies()[net.first_body + free_knot].fluid_force * dt;
+    const RigidBody& knot = sim.bodies()[net.first_body + free_knot];
+    fluid += (knot.fluid_force + knot.modelled_force) * dt;
+    sinker += knot.modelled_force * dt;
     twine += twine_now[free_knot] * dt;
     offset += (model.knots[free_knot].position - model.knots[anchor].position) * dt;
     weight_sum += dt;
   }
   fluid = fluid / weight_sum, twine = twine / weight_sum, offset = offset / weight_sum;
+  sinker = sinker / weight_sum;
+  const double bar_drag = 0.5 * 1000 * 1.2 * 0.01 * 0.1 * 0.3 * 0.3;  // 0.054 N
+  std::printf("sinker drag (%.4f, %.4f, %.4f) N; at the current %.4f N\n", sinker.x, sinker.y,
+              sinker.z, bar_drag);
+  EXPECT_GT(sinker.x, bar_drag);  // the water passes the plate faster than the current
+  EXPECT_LT(sinker.x, 3 * bar_drag);
+  EXPECT_NEAR(sinker.y, 0, 0.02 * bar_drag);
+  {
+    // The flow the bar took in the last stage is the fluid's at its sample points (sampled
+    // again half a step later, at the step's end, by the probes' sampler).
+    const NetModel& model = sim.nets()[0].model;
+    SinkerSamples at;
+    const int n = sinker_sample_points(model, model.knots[free_knot], at);
+    std::vector<ShepardValue> values(n);
+    sample_points(sim.model(), sim.grid(), sim.particles(), std::span<const Vec3d>(at.points, n),
+                  values);
+    Vec3d mean{};
+    for (int i = 0; i < n; ++i) mean += values[i].velocity * at.weights[i];
+    const Vec3d taken = sim.nets()[0].sinker_flow[free_knot];
+    std::printf("flow at the bar (%.4f, %.4f, %.4f) m/s, sampled again (%.4f, %.4f, %.4f) m/s\n",
+                taken.x, taken.y, taken.z, mean.x, mean.y, mean.z);
+    EXPECT_NEAR(norm(taken - mean), 0, 0.02 * norm(mean));
+    const RigidBody& knot = sim.bodies()[net.first_body + free_knot];
+    EXPECT_NEAR(norm(knot.modelled_force - sinker_drag(model, model.knots[free_knot], taken,
+                                                       1000.0)),
+                0, 1e-12);
+  }
   const Vec3d residual = fluid + twine + weight;
   // What is left of the residual is the knot's change of momentum over the window.
   const Vec3d v1 = sim.bodies()[net.first_body + free_knot].state.vel;

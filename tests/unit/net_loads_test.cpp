@@ -4,11 +4,13 @@
 // drag of a single twine.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "netsph/net/current_loads.hpp"
 #include "netsph/net/equivalent_knot.hpp"
+#include "netsph/net/net_generator.hpp"
 #include "netsph/net/screen_model.hpp"
 
 namespace netsph {
@@ -148,6 +150,118 @@ TEST(ScreenLoads, FlatNetFacingTheFlowFeelsTheScreenDrag) {
   const double cd = screen_coefficients_at_cos(p.screen, net.real_solidity, 1, 0).drag;
   EXPECT_NEAR(total.x, 0.5 * 1000 * 0.09 * cd * 0.04, 1e-12);
   EXPECT_NEAR(std::abs(total.y) + std::abs(total.z), 0.0, 1e-15);
+}
+
+// A 0.3 m net of 3 x 3 numerical meshes with a 6 mm sinker bar along its bottom edge.
+NetSpec net_with_sinker(KnotLayout layout) {
+  NetSpec s;
+  s.name = "net";
+  s.width = s.height = 0.3;
+  s.twine_length = 0.02;
+  s.twine_diameter = 0.0026;
+  s.mesh_grouping = 5;
+  s.layout = layout;
+  s.fixed_edges = {false, true, false, false};
+  s.sinker = {0.3, 0.006, 8610, 1.2};
+  return s;
+}
+
+// The bar hangs on the net's bottom edge: half a mesh below the bottom knots in the inset
+// layout (knots at the mesh centres), at them in the crossings layout; once the net swings,
+// along the deformed net, continuing the line from the knot above.
+TEST(SinkerLoads, TheBarHangsOnTheBottomEdgeOfTheDeformedNet) {
+  for (const KnotLayout layout : {KnotLayout::Inset, KnotLayout::Crossings}) {
+    NetModel net = generate_net(net_with_sinker(layout), {});
+    const double bottom = -0.15;  // the outline's bottom edge, about the centre
+    int bars = 0;
+    for (const NetKnot& k : net.knots) {
+      if (k.sinker_length <= 0) continue;
+      ++bars;
+      EXPECT_EQ(k.row, 0);
+      EXPECT_NEAR(dot(sinker_point(net, k) - net.center, net.up), bottom, 1e-12);
+      EXPECT_NEAR(dot(sinker_point(net, k) - k.position, net.across), 0, 1e-12);
+    }
+    EXPECT_EQ(bars, net.columns);
+    // Swung 30 degrees downstream about the top edge: the bar on the line through the bottom
+    // two knots, sinker_offset beyond the bottom one.
+    const double a = std::numbers::pi / 6;
+    const Vec3d top = net.center + net.up * 0.15;
+    for (NetKnot& k : net.knots) {
+      const double below = dot(top - k.position, net.up);
+      k.position = top - net.up * (below * std::cos(a)) + net.normal * (below * std::sin(a)) +
+                   net.across * dot(k.position - top, net.across);
+    }
+    const NetKnot& k = net.knots[net.index(0, 1)];
+    const Vec3d down = -net.up * std::cos(a) + net.normal * std::sin(a);
+    const Vec3d expected = k.position + down * net.sinker_offset;
+    EXPECT_NEAR(norm(sinker_point(net, k) - expected), 0, 1e-12);
+    EXPECT_NEAR(net.sinker_offset, layout == KnotLayout::Inset ? 0.05 : 0.0, 1e-12);
+  }
+}
+
+// The water that meets the bar is sampled at the ends of each knot's share, midway between
+// neighbouring bottom knots or at the bar's ends where a share reaches the net's side (the
+// inset layout), and below each knot in the inset layout (not in the crossings layout, where
+// the bar runs through the knots, which hold no water): never inside a knot. The weights are
+// the trapezoidal rule's along the share.
+TEST(SinkerLoads, TheWaterIsSampledAlongTheBarOutsideTheKnots) {
+  for (const KnotLayout layout : {KnotLayout::Inset, KnotLayout::Crossings}) {
+    const bool inset = layout == KnotLayout::Inset;
+    const NetModel net = generate_net(net_with_sinker(layout), {});
+    std::vector<double> across;  // every sample point's position along the bar
+    for (const NetKnot& k : net.knots) {
+      if (k.sinker_length <= 0) continue;
+      SinkerSamples s;
+      const int n = sinker_sample_points(net, k, s);
+      const bool end = k.column == 0 || k.column == net.columns - 1;
+      EXPECT_EQ(n, inset ? 3 : (end ? 1 : 2));
+      EXPECT_EQ(s.count, n);
+      double weights = 0;
+      for (int i = 0; i < n; ++i) {
+        weights += s.weights[i];
+        const Vec3d& at = s.points[i];
+        EXPECT_NEAR(dot(at - net.center, net.up), -0.15, 1e-12);  // on the bar
+        const double y = dot(at - net.center, net.across);
+        const double from_knot = std::abs(y - dot(k.position - net.center, net.across));
+        EXPECT_TRUE(std::abs(from_knot - 0.05) < 1e-12 || (inset && from_knot < 1e-12)) << y;
+        EXPECT_NEAR(s.weights[i], !inset ? 1.0 / n : (from_knot < 1e-12 ? 0.5 : 0.25), 1e-15);
+        across.push_back(y);
+        for (const NetKnot& other : net.knots)  // in the water, outside every knot
+          EXPECT_GT(norm(at - other.position), 0.5 * std::sqrt(2.0) * other.geometry.size);
+      }
+      EXPECT_NEAR(weights, 1, 1e-15);
+    }
+    std::sort(across.begin(), across.end());
+    // Inset (knots at -0.1, 0, 0.1, the bar 0.05 below them): the ends -0.15, 0.15, the
+    // midpoints -0.05, 0.05 (twice each) and below the knots. Crossings (knots at -0.15 ...
+    // 0.15, on the bar): the midpoints -0.1, 0, 0.1 (twice each).
+    const std::vector<double> expected =
+        inset ? std::vector<double>{-0.15, -0.1, -0.05, -0.05, 0, 0.05, 0.05, 0.1, 0.15}
+              : std::vector<double>{-0.1, -0.1, 0, 0, 0.1, 0.1};
+    ASSERT_EQ(across.size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(across[i], expected[i], 1e-12);
+  }
+}
+
+// Cylinder drag on the bar, per knot's share: 1/2 rho Cd d L U^2 across the bar, on the flow
+// relative to the knot, nothing from flow along the bar; the shares add up to the whole bar's.
+TEST(SinkerLoads, CylinderDragOnTheFlowAcrossTheBarRelativeToTheKnot) {
+  NetModel net = generate_net(net_with_sinker(KnotLayout::Inset), {});
+  const Vec3d flow{0.226, 0.1, 0.0};  // x normal to the net, y along the bar
+  Vec3d total{};
+  for (const NetKnot& k : net.knots) total += sinker_drag(net, k, flow, 1000);
+  const double whole_bar = 0.5 * 1000 * 1.2 * 0.006 * 0.3 * 0.226 * 0.226;
+  EXPECT_NEAR(total.x, whole_bar, 1e-12);  // about 0.055 N
+  EXPECT_NEAR(total.y, 0, 1e-15);
+  EXPECT_NEAR(total.z, 0, 1e-15);
+  // A knot moving with the water takes none; one moving upstream at U takes four times.
+  NetKnot k = net.knots[net.index(0, 0)];
+  k.velocity = {0.226, 0, 0};
+  EXPECT_NEAR(norm(sinker_drag(net, k, flow, 1000)), 0, 1e-15);
+  k.velocity = {-0.226, 0, 0};
+  EXPECT_NEAR(sinker_drag(net, k, flow, 1000).x, 4 * whole_bar / 3, 1e-12);
+  // Knots off the bottom row carry no bar.
+  EXPECT_NEAR(norm(sinker_drag(net, net.knots[net.index(1, 0)], flow, 1000)), 0, 0);
 }
 
 }  // namespace

@@ -31,6 +31,14 @@ void log_run_results(const nlohmann::json& summary) {
                  f[0].get<double>(), f[1].get<double>(), f[2].get<double>(), unit, cd);
   }
   for (const auto& n : summary.value("nets", nlohmann::json::array())) {
+    if (n.contains("mean_sinker_drag_N")) {
+      const auto& f = n["mean_sinker_drag_N"];
+      spdlog::info(
+          "net {}: its sinker bar's drag over {} (modelled at the sampled flow, included in the "
+          "net's force) [{:.4g}, {:.4g}, {:.4g}] N",
+          n["name"].get<std::string>(), window_text(n), f[0].get<double>(), f[1].get<double>(),
+          f[2].get<double>());
+    }
     const auto& b = n["final_bottom_displacement_m"];
     spdlog::info(
         "net {}: largest deflection along its normal {:.4g} m (mean over {}), {:.4g} m at the end; "

@@ -139,6 +139,9 @@ struct RigidBody {
   Vec3d fluid_force{}, fluid_torque{};        ///< last stage, world frame, torque about com
   Vec3d contact_force{}, contact_torque{};    ///< from walls and other bodies
   Vec3d external_force{}, external_torque{};  ///< hooks (twines, sinkers)
+  /// Hydrodynamic load on parts too small to resolve that move with the body (a net knot's
+  /// share of the sinker bar, solver/net_coupling.hpp), from a model; torque about com.
+  Vec3d modelled_force{}, modelled_torque{};
   bool shows_own_velocity() const {
     return model == WallModel::Dbc || slip == WallSlip::WallVelocity;
   }

@@ -161,19 +161,11 @@ GlobalMeasures DistributedStepper::measure_all() {
 void DistributedStepper::sample_all(std::span<const Vec3d> points, std::span<ShepardValue> values) {
   std::vector<ShepardSums> own(points.size());
   sim_.sample_own(points, own);
-  constexpr std::size_t kPer = 6;
-  std::vector<double> sums(kPer * points.size());
-  for (std::size_t k = 0; k < own.size(); ++k) {
-    const ShepardSums& s = own[k];
-    const double v[kPer] = {s.volume_weight, s.velocity.x, s.velocity.y,
-                            s.velocity.z,    s.pressure,   s.density};
-    std::copy(v, v + kPer, sums.begin() + static_cast<std::ptrdiff_t>(kPer * k));
-  }
+  std::vector<double> sums(kShepardSumCount * points.size());
+  for (std::size_t k = 0; k < own.size(); ++k) shepard_pack(own[k], &sums[kShepardSumCount * k]);
   coll_.sum(sums);
-  for (std::size_t k = 0; k < own.size(); ++k) {
-    const double* v = sums.data() + kPer * k;
-    values[k] = shepard_value(ShepardSums{v[0], {v[1], v[2], v[3]}, v[4], v[5]});
-  }
+  for (std::size_t k = 0; k < own.size(); ++k)
+    values[k] = shepard_value(shepard_unpack(&sums[kShepardSumCount * k]));
 }
 
 std::uint64_t DistributedStepper::count_all(ParticleSelection which) {

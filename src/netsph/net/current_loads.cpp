@@ -66,21 +66,63 @@ void add_morison_loads(const NetModel& net, const CurrentLoadParameters& p,
   }
 }
 
-/// Cylinder drag on the sinker bar (along the net's across direction), per bottom knot.
+/// Cylinder drag on the sinker bar in the uniform current, per bottom knot.
 void add_sinker_loads(const NetModel& net, const CurrentLoadParameters& p,
                       std::vector<Vec3d>& forces) {
-  if (net.sinker_diameter <= 0) return;
-  for (const NetKnot& k : net.knots) {
-    if (k.sinker_length <= 0) continue;
-    const Vec3d u = p.velocity - k.velocity;
-    const Vec3d un = u - net.across * dot(u, net.across);
-    const double area = net.sinker_diameter * k.sinker_length;
-    forces[&k - net.knots.data()] +=
-        un * (0.5 * p.water_density * net.sinker_drag_coefficient * area * norm(un));
-  }
+  for (std::size_t k = 0; k < net.knots.size(); ++k)
+    forces[k] += sinker_drag(net, net.knots[k], p.velocity, p.water_density);
 }
 
 }  // namespace
+
+Vec3d sinker_point(const NetModel& net, const NetKnot& k) {
+  Vec3d down = -net.up;
+  if (k.row + 1 < net.rows) {
+    const Vec3d d = k.position - net.knots[net.index(k.row + 1, k.column)].position;
+    const double length = norm(d);
+    if (length > 0) down = d / length;
+  }
+  return k.position + down * net.sinker_offset;
+}
+
+int sinker_sample_points(const NetModel& net, const NetKnot& k, SinkerSamples& s) {
+  const Vec3d here = sinker_point(net, k);
+  const auto bar_at = [&](int column) {
+    return sinker_point(net, net.knots[net.index(k.row, column)]);
+  };
+  Vec3d* points = s.points;
+  int n = 0;
+  // The bar at the knot: below it in the inset layout; inside it in the crossings layout,
+  // where the knot's particles leave no water to sample (the share's ends only, then).
+  if (!net.crossings) points[n++] = here;
+  for (const int side : {-1, 1}) {
+    const int column = k.column + side;
+    if (column >= 0 && column < net.columns) {
+      points[n++] = (here + bar_at(column)) * 0.5;
+    } else if (!net.crossings) {
+      // Outward along the bar: away from the neighbour on the other side, if there is one.
+      const int other = k.column - side;
+      Vec3d out = net.across * static_cast<double>(side);
+      if (other >= 0 && other < net.columns) {
+        const Vec3d d = here - bar_at(other);
+        if (norm(d) > 0) out = d / norm(d);
+      }
+      points[n++] = here + out * (0.5 * net.spacing_across);
+    }
+  }
+  // The trapezoidal rule along the share: ends 1/4 each, the middle 1/2 (ends 1/2 each
+  // without it).
+  for (int i = 0; i < n; ++i) s.weights[i] = net.crossings ? 1.0 / n : (i == 0 ? 0.5 : 0.25);
+  return s.count = n;
+}
+
+Vec3d sinker_drag(const NetModel& net, const NetKnot& k, const Vec3d& flow, double water_density) {
+  if (k.sinker_length <= 0 || net.sinker_diameter <= 0) return {};
+  const Vec3d u = flow - k.velocity;
+  const Vec3d un = u - net.across * dot(u, net.across);
+  const double area = net.sinker_diameter * k.sinker_length;
+  return un * (0.5 * water_density * net.sinker_drag_coefficient * area * norm(un));
+}
 
 void add_current_loads(const NetModel& net, const CurrentLoadParameters& p,
                        std::vector<Vec3d>& forces) {

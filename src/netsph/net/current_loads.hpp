@@ -9,7 +9,8 @@
 //    Bessonneau & Marichal's Cn = 1.2, Ct = 0.1), half to each end knot; (L - d) leaves out
 //    the crossing.
 // Both use the velocity relative to the moving knots. A sinker bar adds cylinder drag on its
-// projected area.
+// projected area (sinker_drag, which coupled runs use too, with the SPH fluid's velocity at
+// the bar).
 #include <vector>
 
 #include "netsph/case/case_spec.hpp"
@@ -26,6 +27,32 @@ struct CurrentLoadParameters {
   double normal_drag = 1.2;
   double tangential_drag = 0.1;
 };
+
+/// Where the sinker bar that knot `k` carries is now: the net's bottom edge, below the bottom
+/// row of knots by NetModel::sinker_offset along the deformed net (from the knot above it
+/// to `k`; the net's down direction in a net one knot tall).
+Vec3d sinker_point(const NetModel& net, const NetKnot& k);
+
+/// Where the water that meets knot `k`'s share of the bar is sampled in a coupled run, with
+/// the weights of a mean along the share.
+struct SinkerSamples {
+  Vec3d points[3];
+  double weights[3] = {};
+  int count = 0;
+};
+/// The ends of `k`'s share of the bar (midway to each neighbour along the bottom row, or the
+/// bar's end at the net's side where the share reaches it: the end knots of the inset
+/// layout) and, in the inset layout, the bar below the knot; by the trapezoidal rule. In the
+/// crossings layout the bar runs through the knot, whose particles leave no water there: the
+/// ends only. Returns the number of points (1 to 3).
+int sinker_sample_points(const NetModel& net, const NetKnot& k, SinkerSamples& samples);
+
+/// Drag on the length of sinker bar knot `k` carries in water flowing at `flow` (m/s, the
+/// water's velocity at the bar) of density `water_density`: cylinder drag on the velocity
+/// relative to the knot, normal to the bar (along the net's across direction),
+/// F = 1/2 rho Cd d L |u_n| u_n (Morison et al. 1950, the drag term), N. Zero for knots
+/// without a sinker share.
+Vec3d sinker_drag(const NetModel& net, const NetKnot& k, const Vec3d& flow, double water_density);
 
 /// Adds the current's force on every knot to `forces` (one per knot).
 void add_current_loads(const NetModel& net, const CurrentLoadParameters& p,

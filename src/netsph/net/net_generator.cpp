@@ -116,6 +116,8 @@ NetModel generate_net(const NetSpec& spec, const NetEnvironment& env) {
   net.sinker_mass = sinker.density * sinker_volume;
   net.sinker_diameter = sinker.diameter;
   net.sinker_drag_coefficient = sinker.drag_coefficient;
+  net.sinker_offset = offset * net.spacing_up;
+  net.crossings = crossings;
 
   double projected = 0;
   for (int row = 0; row < net.rows; ++row) {

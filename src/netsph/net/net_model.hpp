@@ -60,6 +60,10 @@ struct NetModel {
   double netting_mass = 0;                      ///< kg, the real netting
   double sinker_mass = 0;                       ///< kg
   double sinker_diameter = 0, sinker_drag_coefficient = 0;
+  /// The bar's distance below the bottom row of knots (the net's bottom edge), m: half a
+  /// spacing in the inset layout, 0 in the crossings layout.
+  double sinker_offset = 0;
+  bool crossings = false;  ///< knots on the twine crossings (the outline's edges among them)
   std::vector<NetKnot> knots;
   std::vector<NetTwine> twines;
 

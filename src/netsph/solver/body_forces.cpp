@@ -39,8 +39,12 @@ GroupLoad group_load(const Simulation& sim, const ForceGroup& g) {
   GroupLoad load;
   for (std::size_t b : g.bodies) {
     const RigidBody& body = sim.bodies()[b];
-    load.force += body.fluid_force;
-    load.moment += body.fluid_torque + cross(body.state.com - g.reference_point, body.fluid_force);
+    // What the bodies take from the water: the resolved fluid's force and the modelled
+    // drag of their unresolved parts (a net's sinker bar), as a load cell reads them both.
+    const Vec3d force = body.fluid_force + body.modelled_force;
+    load.force += force;
+    load.moment +=
+        body.fluid_torque + body.modelled_torque + cross(body.state.com - g.reference_point, force);
   }
   if (g.reference_velocity && g.reference_area) {
     const double u = *g.reference_velocity;

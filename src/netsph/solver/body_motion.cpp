@@ -8,8 +8,11 @@
 namespace netsph {
 
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
-                    std::vector<CoupledNet>& nets, double time, bool corrector, double dt) {
+                    std::vector<CoupledNet>& nets, double time, bool corrector, double dt,
+                    const FluidSampler& sample) {
   const Vec3d g = spec.fluid.gravity;
+  // Where the stage has the bodies, before they move.
+  if (!nets.empty()) sample_sinker_flows(nets, bodies, sample);
   for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
     RigidBody& b = bodies[bi];
     if (!corrector) b.start = b.state;

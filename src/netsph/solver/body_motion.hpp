@@ -9,16 +9,18 @@
 #include "netsph/bodies/rigid_body.hpp"
 #include "netsph/case/case_spec.hpp"
 #include "netsph/solver/net_coupling.hpp"
+#include "netsph/sph/fluid_sampler.hpp"
 
 namespace netsph {
 
 /// Advances every body to the half step (predictor, `corrector` false) or the full step from
 /// its step-start state (saved here in the predictor): fixed bodies stay, prescribed ones
 /// follow their velocity history, floating ones move under fluid, contact and external loads
-/// and gravity; net knots are then advanced by the knot-spring solver. `time` is the step's
-/// start.
+/// and gravity; net knots are then advanced by the knot-spring solver, their sinker bars'
+/// drag from the fluid `sample` gives at the bars. `time` is the step's start.
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
-                    std::vector<CoupledNet>& nets, double time, bool corrector, double dt);
+                    std::vector<CoupledNet>& nets, double time, bool corrector, double dt,
+                    const FluidSampler& sample);
 
 /// What is wrong, in words, if body `b` is as wide as half a periodic axis's period or wider
 /// (judged by its particle farthest from the centre of mass, so whatever its rotation); empty

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "netsph/net/current_loads.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
 #include "netsph/net/net_generator.hpp"
 
@@ -66,6 +67,9 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
     c.model = generate_net(ns, env);
     knots += c.model.knots.size();
     for (const NetKnot& k : c.model.knots) c.initial.push_back(k.position);
+    c.water_density = env.water_density;
+    c.sinker_flow.assign(c.model.knots.size(), Vec3d{});
+    c.sinker_wet.assign(c.model.knots.size(), 0);
     nets.push_back(std::move(c));
   }
   std::size_t first = expanded.bodies.size() - knots;
@@ -74,6 +78,44 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
     first += c.model.knots.size();
   }
   return nets;
+}
+
+void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidBody>& bodies,
+                         const FluidSampler& sample) {
+  std::vector<Vec3d> points;
+  std::vector<SinkerSamples> knots;  // the sinker knots', in net and knot order
+  for (CoupledNet& c : nets) {
+    NetModel& net = c.model;
+    for (std::size_t k = 0; k < net.knots.size(); ++k)
+      net.knots[k].position = bodies[c.first_body + k].state.com;
+    for (const NetKnot& k : net.knots) {
+      if (k.sinker_length <= 0) continue;
+      SinkerSamples& s = knots.emplace_back();
+      sinker_sample_points(net, k, s);
+      points.insert(points.end(), s.points, s.points + s.count);
+    }
+  }
+  if (points.empty()) return;
+  std::vector<ShepardValue> values(points.size());
+  sample(points, values);
+  // Each knot's flow: the weighted mean over its points in the water.
+  std::size_t next = 0, knot = 0;
+  for (CoupledNet& c : nets) {
+    for (std::size_t k = 0; k < c.model.knots.size(); ++k) {
+      if (c.model.knots[k].sinker_length <= 0) continue;
+      const SinkerSamples& s = knots[knot++];
+      Vec3d sum{};
+      double weight = 0;
+      for (int i = 0; i < s.count; ++i) {
+        const ShepardValue& v = values[next++];
+        if (v.coverage < kSinkerWetCoverage) continue;
+        sum += v.velocity * s.weights[i];
+        weight += s.weights[i];
+      }
+      c.sinker_wet[k] = weight > 0;
+      c.sinker_flow[k] = weight > 0 ? sum / weight : Vec3d{};
+    }
+  }
 }
 
 void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>& bodies,
@@ -85,16 +127,26 @@ void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>&
       net.knots[k].position = b.start.com;
       net.knots[k].velocity = b.start.vel;
     }
+    const auto sinker = [&](const NetModel& n, std::size_t k) {
+      return c.sinker_wet[k] ? sinker_drag(n, n.knots[k], c.sinker_flow[k], c.water_density)
+                             : Vec3d{};
+    };
+    // The sinker's drag on each sub-step's knot velocity: the bar damps the net's swinging.
     const auto fluid = [&](const NetModel& n, std::vector<Vec3d>& f) {
       for (std::size_t k = 0; k < n.knots.size(); ++k) {
         const RigidBody& b = bodies[c.first_body + k];
-        f[k] += b.fluid_force + b.contact_force;
+        f[k] += b.fluid_force + b.contact_force + sinker(n, k);
       }
     };
     KnotSpringSolver solver(net);
     solver.advance(stage_dt, fluid);
     for (std::size_t k = 0; k < net.knots.size(); ++k) {
       RigidBody& b = bodies[c.first_body + k];
+      b.modelled_force = sinker(net, k);
+      b.modelled_torque =
+          net.knots[k].sinker_length > 0
+              ? cross(sinker_point(net, net.knots[k]) - net.knots[k].position, b.modelled_force)
+              : Vec3d{};
       if (b.motion != BodyMotion::Floating) continue;
       b.state.com = net.knots[k].position;
       b.state.vel = net.knots[k].velocity;

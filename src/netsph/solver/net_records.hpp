@@ -14,8 +14,8 @@ namespace netsph {
 class NetRecorder {
  public:
   NetRecorder(const Simulation& sim, double window_start, double window_end);
-  /// Adds the present deflection and tension, weighted by dt, when the step ended inside the
-  /// window.
+  /// Adds the present deflection, tension and sinker drag, weighted by dt, when the step ended
+  /// inside the window.
   void accumulate(const Simulation& sim);
   /// One object per coupled net (an empty array without nets).
   nlohmann::json summary(const Simulation& sim) const;
@@ -27,6 +27,9 @@ class NetRecorder {
   double t0_, t1_;
   double weight_ = 0;
   std::vector<double> deflection_, tension_;  ///< dt-weighted sums per net
+  std::vector<Vec3d> sinker_;                 ///< the sinker bar's modelled drag, the same
+  double sinker_weight_ = 0;  ///< the time sinker_ covers (less than weight_ after a restart
+                              ///< from a checkpoint older than it)
 };
 
 }  // namespace netsph

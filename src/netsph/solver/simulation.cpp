@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "netsph/backend/cpu/probe_pass.hpp"
 #include "netsph/boundary/mdbc.hpp"
 #include "netsph/solver/body_motion.hpp"
 #include "netsph/solver/step_settings.hpp"
@@ -134,7 +135,30 @@ void Simulation::reduce_body_forces() {
 }
 
 void Simulation::advance_bodies(bool corrector, double dt) {
-  netsph::advance_bodies(spec_, scene_.bodies, nets_, time_, corrector, dt);
+  netsph::advance_bodies(spec_, scene_.bodies, nets_, time_, corrector, dt,
+                         [this](std::span<const Vec3d> points, std::span<ShepardValue> values) {
+                           sample_fluid_at_stage(points, values);
+                         });
+}
+
+void Simulation::sample_fluid_at_stage(std::span<const Vec3d> points,
+                                       std::span<ShepardValue> values) {
+  std::vector<ShepardSums> sums(points.size());
+  if (!partition_) {
+    point_sums(scene_.model, grid_, p_, points, sums);
+  } else {
+    // Each process sums the particles it owns (by position, as the body loads are counted),
+    // so the sums over the processes count every particle once.
+    mark_owned();
+    point_sums(scene_.model, grid_, p_, points, sums, owned_);
+    std::vector<double> packed(kShepardSumCount * sums.size());
+    for (std::size_t k = 0; k < sums.size(); ++k)
+      shepard_pack(sums[k], &packed[kShepardSumCount * k]);
+    partition_->global_sum(packed);
+    for (std::size_t k = 0; k < sums.size(); ++k)
+      sums[k] = shepard_unpack(&packed[kShepardSumCount * k]);
+  }
+  for (std::size_t k = 0; k < sums.size(); ++k) values[k] = shepard_value(sums[k]);
 }
 
 void Simulation::sort_particles(bool mid_step) {

@@ -207,6 +207,9 @@ class Simulation {
   void reduce_body_forces();
   /// Advances every body's state to the half step (predictor) or the full step.
   void advance_bodies(bool corrector, double dt);
+  /// The fluid at `points` as the stage has it (its positions and cell table), summed over the
+  /// processes of a distributed run: what the nets' sinker bars take their flow from.
+  void sample_fluid_at_stage(std::span<const Vec3d> points, std::span<ShepardValue> values);
   Vec3f body_point_velocity(std::size_t i) const;
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
   /// With a partition: owned_ from the present positions (exact right after the exchange).

@@ -99,6 +99,10 @@ void Simulation::save_global_state(CheckpointData& c) const {
     put3(bodies, b.fluid_force), put3(bodies, b.fluid_torque);
     put3(bodies, b.contact_force), put3(bodies, b.contact_torque);
   }
+  // The modelled loads (a net's sinker bar) apart: checkpoints before 2026-12-03 lack them.
+  auto& modelled = c.f64["bodies.modelled"];
+  for (const RigidBody& b : scene_.bodies)
+    put3(modelled, b.modelled_force), put3(modelled, b.modelled_torque);
   auto& knots = c.f64["nets.knots"];
   for (const CoupledNet& net : nets_)
     for (const NetKnot& k : net.model.knots) put3(knots, k.position), put3(knots, k.velocity);
@@ -176,6 +180,13 @@ void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
     body.fluid_force = vec(v + 13), body.fluid_torque = vec(v + 16);
     body.contact_force = vec(v + 19), body.contact_torque = vec(v + 22);
     body.start = body.state;
+  }
+  if (const auto m = c.f64.find("bodies.modelled"); m != c.f64.end()) {
+    if (m->second.size() != 6 * scene_.bodies.size()) fail("the bodies differ");
+    for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+      scene_.bodies[b].modelled_force = vec(m->second.data() + 6 * b);
+      scene_.bodies[b].modelled_torque = vec(m->second.data() + 6 * b + 3);
+    }
   }
   std::size_t k = 0;
   for (CoupledNet& net : nets_) {

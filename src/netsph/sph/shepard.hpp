@@ -11,6 +11,7 @@
 #include "netsph/core/host_device.hpp"
 #include "netsph/core/real.hpp"
 #include "netsph/core/vec3.hpp"
+#include "netsph/sph/equation_of_state.hpp"
 
 namespace netsph {
 
@@ -29,6 +30,24 @@ NETSPH_HD void shepard_accumulate(ShepardSums& s, Real w, Real mass, Real rho, c
   s.velocity += Vec3d(v) * vw;
   s.pressure += vw * p;
   s.density += vw * rho;
+}
+
+/// Adds fluid particle j at kernel weight w: its gauge pressure from the equation of state
+/// (the background pressure removed), as the probes report it. CPU and device sampling share it.
+NETSPH_HD void shepard_accumulate_fluid(ShepardSums& s, Real w, Real mass, Real rho, const Vec3f& v,
+                                        const TaitEos& eos) {
+  shepard_accumulate(s, w, mass, rho, v, eos.pressure(rho) - eos.p_background);
+}
+
+/// The sums as plain numbers (kShepardSumCount per point), for sums over processes.
+inline constexpr int kShepardSumCount = 6;
+inline void shepard_pack(const ShepardSums& s, double* out) {
+  const double v[kShepardSumCount] = {s.volume_weight, s.velocity.x, s.velocity.y,
+                                      s.velocity.z,    s.pressure,   s.density};
+  for (int k = 0; k < kShepardSumCount; ++k) out[k] = v[k];
+}
+inline ShepardSums shepard_unpack(const double* v) {
+  return ShepardSums{v[0], {v[1], v[2], v[3]}, v[4], v[5]};
 }
 
 struct ShepardValue {

@@ -27,9 +27,8 @@ inline void point_sums(const FluidModel& m, const CellGrid& grid, const Particle
       ShepardSums s;
       visit_point_neighbours(m, grid, p, points[i], [&](std::uint32_t j, const Vec3f&, Real r) {
         if (p.kind[j] != ParticleKind::Fluid || (!all && !keep[j])) return;
-        const Real rho = p.rho[j];
-        shepard_accumulate(s, kernel_value<K>(m.kernel, r), m.mass, rho, p.vel[j],
-                           m.eos.pressure(rho) - m.eos.p_background);
+        shepard_accumulate_fluid(s, kernel_value<K>(m.kernel, r), m.mass, p.rho[j], p.vel[j],
+                                 m.eos);
       });
       sums[i] = s;
     }

@@ -20,6 +20,7 @@
 #include "netsph/sph/ghost_interpolation.hpp"
 #include "netsph/sph/pair_interaction.hpp"
 #include "netsph/sph/particle_set.hpp"
+#include "netsph/sph/shepard.hpp"
 #include "netsph/sph/shifting.hpp"
 #include "netsph/sph/symplectic.hpp"
 
@@ -305,31 +306,59 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
   }
 }
 
-/// The ghost-node sums at `point` (wrapped into periodic axes first) over the fluid and, unless
-/// `fluid_only`, buffer particles within the support (backend/cpu/ghost_pass.hpp's
-/// ghost_sums_at); empty outside the grid.
+/// Calls f(j, d, r2) for every particle j within the support of `at` (wrapped into periodic
+/// axes first) whose kind keep() accepts, d = x_j - at, r2 = |d|^2; none outside the grid.
+template <class Keep, class F>
+NETSPH_HD void device_visit_point(const GridIndex& g, const std::uint32_t* cell_begin,
+                                  const DeviceState& s, Real support2, const Vec3d& at, Keep keep,
+                                  F f) {
+  const Vec3d point = g.wrapped(at);
+  const std::uint32_t c = g.key_of(point);
+  if (c == g.sentinel()) return;
+  g.for_each_range(cell_begin, c, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
+    const Vec3d sh(shift);
+    for (std::uint32_t j = b0; j < b1; ++j) {
+      if (!keep(s.kind[j])) continue;
+      const Vec3f d(s.pos[j] + sh - point);
+      const Real r2 = d.x * d.x + d.y * d.y + d.z * d.z;
+      if (r2 < support2) f(j, d, r2);
+    }
+  });
+}
+
+/// The ghost-node sums at `point` over the fluid and, unless `fluid_only`, buffer particles
+/// within the support (backend/cpu/ghost_pass.hpp's ghost_sums_at); empty outside the grid.
 template <class Kernel>
 NETSPH_HD GhostSums device_ghost_sums(const GridIndex& g, const std::uint32_t* cell_begin,
                                       const DeviceState& s, const FluidModel& m, const Vec3d& at,
                                       bool fluid_only) {
   GhostSums sums;
-  const Vec3d point = g.wrapped(at);
-  const std::uint32_t c = g.key_of(point);
-  if (c == g.sentinel()) return sums;
-  g.for_each_range(cell_begin, c, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
-    const Vec3d sh(shift);
-    for (std::uint32_t j = b0; j < b1; ++j) {
-      const ParticleKind kj = s.kind[j];
-      if (kj == ParticleKind::Wall || kj == ParticleKind::Body) continue;
-      if (fluid_only && kj != ParticleKind::Fluid) continue;
-      const Vec3f d(s.pos[j] + sh - point);
-      const Real r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-      if (!(r2 < m.support2)) continue;
-      const Real r = std::sqrt(r2);
-      ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
-                       kernel_grad_factor<Kernel>(m.kernel, r), m.mass, s.rho[j], s.vel[j]);
-    }
-  });
+  const auto keep = [&](ParticleKind k) {
+    return fluid_only ? k == ParticleKind::Fluid
+                      : k != ParticleKind::Wall && k != ParticleKind::Body;
+  };
+  device_visit_point(
+      g, cell_begin, s, m.support2, at, keep, [&](std::uint32_t j, const Vec3f& d, Real r2) {
+        const Real r = std::sqrt(r2);
+        ghost_accumulate(sums, d, kernel_value<Kernel>(m.kernel, r),
+                         kernel_grad_factor<Kernel>(m.kernel, r), m.mass, s.rho[j], s.vel[j]);
+      });
+  return sums;
+}
+
+/// Shepard sums at point `at` over the fluid particles (not buffers, walls or bodies) within
+/// the support (backend/cpu/probe_pass.hpp's point_sums); empty outside the grid.
+template <class Kernel>
+NETSPH_HD ShepardSums device_point_sums(const GridIndex& g, const std::uint32_t* cell_begin,
+                                        const DeviceState& s, const FluidModel& m,
+                                        const Vec3d& at) {
+  ShepardSums sums;
+  device_visit_point(
+      g, cell_begin, s, m.support2, at, [](ParticleKind k) { return k == ParticleKind::Fluid; },
+      [&](std::uint32_t j, const Vec3f&, Real r2) {
+        shepard_accumulate_fluid(sums, kernel_value<Kernel>(m.kernel, std::sqrt(r2)), m.mass,
+                                 s.rho[j], s.vel[j], m.eos);
+      });
   return sums;
 }
 

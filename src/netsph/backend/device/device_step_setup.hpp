@@ -8,6 +8,7 @@
 
 #include "netsph/backend/device/device_kernels.hpp"
 #include "netsph/neighbors/grid_index.hpp"
+#include "netsph/sph/fluid_sampler.hpp"
 #include "netsph/sph/time_step.hpp"
 
 namespace netsph {
@@ -47,9 +48,11 @@ struct DeviceSetup {
   /// false scans all 125 (NETSPH_RATES_TRIM=0).
   bool rates_trimmed = true;
   /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
-  /// holds the bodies' states on entry and receives the new ones. `time` is the step's start.
+  /// holds the bodies' states on entry and receives the new ones; `sample` samples the fluid
+  /// as the stage has it (DeviceStepper::sample_fluid). `time` is the step's start.
   std::function<void(bool corrector, double time, double dt,
-                     const std::vector<DeviceBodyLoads>& loads, std::vector<RigidState>& states)>
+                     const std::vector<DeviceBodyLoads>& loads, std::vector<RigidState>& states,
+                     const FluidSampler& sample)>
       advance_bodies;
 };
 

@@ -568,9 +568,42 @@ class DeviceStepper {
       }
     });
     Exec::download(loads_host_.data(), loads_, nb);
-    s_.advance_bodies(corrector, time_, dt, loads_host_, states_);
+    s_.advance_bodies(corrector, time_, dt, loads_host_, states_,
+                      [this](std::span<const Vec3d> points, std::span<ShepardValue> values) {
+                        sample_fluid(points, values);
+                      });
     for (std::size_t b = 0; b < nb; ++b) s_.bodies[b].state = states_[b];
     Exec::upload(bodies_, s_.bodies.data(), nb);
+  }
+
+  /// The fluid at `points` as the stage has it (its positions and cell table): a few points
+  /// (the nets' sinker bars), one thread each, their sums copied back.
+  void sample_fluid(std::span<const Vec3d> points, std::span<ShepardValue> values) {
+    const std::size_t n = points.size();
+    if (n == 0) return;
+    Exec::upload(sample_points_, points.data(), n);
+    Exec::resize_discarding(sample_sums_, n);
+    if (s_.model.kernel_type == KernelType::Wendland) {
+      sample_for<WendlandC2>(n);
+    } else {
+      sample_for<CubicSpline>(n);
+    }
+    sample_sums_host_.resize(n);
+    Exec::download(sample_sums_host_.data(), sample_sums_, n);
+    for (std::size_t k = 0; k < n; ++k) values[k] = shepard_value(sample_sums_host_[k]);
+  }
+
+  template <class K>
+  void sample_for(std::size_t n) {
+    const GridIndex g = s_.grid;
+    const std::uint32_t* begin = cell_begin_.data();
+    const DeviceState st = state();
+    const FluidModel m = s_.model;
+    const Vec3d* points = sample_points_.data();
+    ShepardSums* sums = sample_sums_.data();
+    Exec::for_each(n, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      sums[i] = device_point_sums<K>(g, begin, st, m, points[i]);
+    });
   }
 
   void rates(bool shift) {
@@ -717,6 +750,9 @@ class DeviceStepper {
   Buffer<DeviceBodyLoads> loads_;
   std::vector<DeviceBodyLoads> loads_host_;
   std::vector<RigidState> states_;
+  Buffer<Vec3d> sample_points_;  ///< sample_fluid's points and sums
+  Buffer<ShepardSums> sample_sums_;
+  std::vector<ShepardSums> sample_sums_host_;
 };
 
 }  // namespace netsph
