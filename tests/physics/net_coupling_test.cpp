@@ -86,9 +86,9 @@ TEST(NetCoupling, TetheredKnotSettlesWhereTwineBalancesFluidForce) {
                 taken.x, taken.y, taken.z, mean.x, mean.y, mean.z);
     EXPECT_NEAR(norm(taken - mean), 0, 0.02 * norm(mean));
     const RigidBody& knot = sim.bodies()[net.first_body + free_knot];
-    EXPECT_NEAR(norm(knot.modelled_force - sinker_drag(model, model.knots[free_knot], taken,
-                                                       1000.0)),
-                0, 1e-12);
+    EXPECT_NEAR(
+        norm(knot.modelled_force - sinker_drag(model, model.knots[free_knot], taken, 1000.0)), 0,
+        1e-12);
   }
   const Vec3d residual = fluid + twine + weight;
   // What is left of the residual is the knot's change of momentum over the window.
