@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "netsph/sph/fluid_sampler.hpp"
+
 namespace netsph {
 
 namespace {
@@ -161,11 +163,8 @@ GlobalMeasures DistributedStepper::measure_all() {
 void DistributedStepper::sample_all(std::span<const Vec3d> points, std::span<ShepardValue> values) {
   std::vector<ShepardSums> own(points.size());
   sim_.sample_own(points, own);
-  std::vector<double> sums(kShepardSumCount * points.size());
-  for (std::size_t k = 0; k < own.size(); ++k) shepard_pack(own[k], &sums[kShepardSumCount * k]);
-  coll_.sum(sums);
-  for (std::size_t k = 0; k < own.size(); ++k)
-    values[k] = shepard_value(shepard_unpack(&sums[kShepardSumCount * k]));
+  sum_over_processes(own, [&](std::span<double> v) { coll_.sum(v); });
+  for (std::size_t k = 0; k < own.size(); ++k) values[k] = shepard_value(own[k]);
 }
 
 std::uint64_t DistributedStepper::count_all(ParticleSelection which) {

@@ -82,39 +82,39 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
 
 void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidBody>& bodies,
                          const FluidSampler& sample) {
+  struct Share {
+    CoupledNet* net;
+    std::size_t knot;
+    SinkerSamples samples;
+  };
+  std::vector<Share> shares;
   std::vector<Vec3d> points;
-  std::vector<SinkerSamples> knots;  // the sinker knots', in net and knot order
   for (CoupledNet& c : nets) {
     NetModel& net = c.model;
     for (std::size_t k = 0; k < net.knots.size(); ++k)
       net.knots[k].position = bodies[c.first_body + k].state.com;
-    for (const NetKnot& k : net.knots) {
-      if (k.sinker_length <= 0) continue;
-      SinkerSamples& s = knots.emplace_back();
-      sinker_sample_points(net, k, s);
-      points.insert(points.end(), s.points, s.points + s.count);
+    for (std::size_t k = 0; k < net.knots.size(); ++k) {
+      if (net.knots[k].sinker_length <= 0) continue;
+      Share& s = shares.emplace_back(Share{&c, k, {}});
+      sinker_sample_points(net, net.knots[k], s.samples);
+      points.insert(points.end(), s.samples.points, s.samples.points + s.samples.count);
     }
   }
   if (points.empty()) return;
   std::vector<ShepardValue> values(points.size());
   sample(points, values);
-  // Each knot's flow: the weighted mean over its points in the water.
-  std::size_t next = 0, knot = 0;
-  for (CoupledNet& c : nets) {
-    for (std::size_t k = 0; k < c.model.knots.size(); ++k) {
-      if (c.model.knots[k].sinker_length <= 0) continue;
-      const SinkerSamples& s = knots[knot++];
-      Vec3d sum{};
-      double weight = 0;
-      for (int i = 0; i < s.count; ++i) {
-        const ShepardValue& v = values[next++];
-        if (v.coverage < kSinkerWetCoverage) continue;
-        sum += v.velocity * s.weights[i];
-        weight += s.weights[i];
-      }
-      c.sinker_wet[k] = weight > 0;
-      c.sinker_flow[k] = weight > 0 ? sum / weight : Vec3d{};
+  // Each share's flow: the weighted mean over its points in the water.
+  const ShepardValue* v = values.data();
+  for (const Share& s : shares) {
+    Vec3d sum{};
+    double weight = 0;
+    for (int i = 0; i < s.samples.count; ++i, ++v) {
+      if (v->coverage < kSinkerWetCoverage) continue;
+      sum += v->velocity * s.samples.weights[i];
+      weight += s.samples.weights[i];
     }
+    s.net->sinker_wet[s.knot] = weight > 0;
+    s.net->sinker_flow[s.knot] = weight > 0 ? sum / weight : Vec3d{};
   }
 }
 
@@ -144,9 +144,7 @@ void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>&
       RigidBody& b = bodies[c.first_body + k];
       b.modelled_force = sinker(net, k);
       b.modelled_torque =
-          net.knots[k].sinker_length > 0
-              ? cross(sinker_point(net, net.knots[k]) - net.knots[k].position, b.modelled_force)
-              : Vec3d{};
+          cross(sinker_point(net, net.knots[k]) - net.knots[k].position, b.modelled_force);
       if (b.motion != BodyMotion::Floating) continue;
       b.state.com = net.knots[k].position;
       b.state.vel = net.knots[k].velocity;

@@ -10,6 +10,7 @@
 #include "netsph/boundary/mdbc.hpp"
 #include "netsph/solver/body_motion.hpp"
 #include "netsph/solver/step_settings.hpp"
+#include "netsph/sph/fluid_sampler.hpp"
 
 namespace netsph {
 
@@ -151,12 +152,7 @@ void Simulation::sample_fluid_at_stage(std::span<const Vec3d> points,
     // so the sums over the processes count every particle once.
     mark_owned();
     point_sums(scene_.model, grid_, p_, points, sums, owned_);
-    std::vector<double> packed(kShepardSumCount * sums.size());
-    for (std::size_t k = 0; k < sums.size(); ++k)
-      shepard_pack(sums[k], &packed[kShepardSumCount * k]);
-    partition_->global_sum(packed);
-    for (std::size_t k = 0; k < sums.size(); ++k)
-      sums[k] = shepard_unpack(&packed[kShepardSumCount * k]);
+    sum_over_processes(sums, [&](std::span<double> v) { partition_->global_sum(v); });
   }
   for (std::size_t k = 0; k < sums.size(); ++k) values[k] = shepard_value(sums[k]);
 }

@@ -39,17 +39,6 @@ NETSPH_HD void shepard_accumulate_fluid(ShepardSums& s, Real w, Real mass, Real 
   shepard_accumulate(s, w, mass, rho, v, eos.pressure(rho) - eos.p_background);
 }
 
-/// The sums as plain numbers (kShepardSumCount per point), for sums over processes.
-inline constexpr int kShepardSumCount = 6;
-inline void shepard_pack(const ShepardSums& s, double* out) {
-  const double v[kShepardSumCount] = {s.volume_weight, s.velocity.x, s.velocity.y,
-                                      s.velocity.z,    s.pressure,   s.density};
-  for (int k = 0; k < kShepardSumCount; ++k) out[k] = v[k];
-}
-inline ShepardSums shepard_unpack(const double* v) {
-  return ShepardSums{v[0], {v[1], v[2], v[3]}, v[4], v[5]};
-}
-
 struct ShepardValue {
   double coverage = 0;  ///< sum V W: about 1 in the fluid, 0 with no fluid in reach
   Vec3d velocity{};     ///< m/s (zero when coverage is 0)
