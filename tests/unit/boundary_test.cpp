@@ -11,6 +11,7 @@
 #include "netsph/boundary/open_boundary.hpp"
 #include "netsph/boundary/wall_ghosts.hpp"
 #include "netsph/case/case_spec.hpp"
+#include "netsph/core/periodic_image.hpp"
 #include "netsph/sph/ghost_interpolation.hpp"
 #include "netsph/sph/kernels.hpp"
 
@@ -217,6 +218,7 @@ OpenBoundaryZone inlet_xmin() {
   z.inward = 1;
   z.plane = 0.03;
   z.width = 0.03;
+  z.face = 0;
   z.speed = 0.5;
   z.surface_z = 0.2;
   return z;
@@ -231,6 +233,7 @@ OpenBoundaryZone outlet_xmax() {
   z.inward = -1;
   z.plane = 0.97;
   z.width = 0.03;
+  z.face = 1;
   z.speed = 0.4;
   return z;
 }
@@ -415,6 +418,35 @@ TEST(OpenBoundary, InletKeepsItsBufferFilledOverManySteps) {
   // 50 steps * 0.2 dp = 10 dp advanced over 5 rows: 50 particles entered the fluid.
   EXPECT_EQ(created, 50u);
   EXPECT_EQ(p.count(ParticleKind::Fluid), 50u);
+}
+
+TEST(OpenBoundary, OutletParticleOnThePeriodicFaceIsRemovedNotWrapped) {
+  // Domain [0, 0.5] in x, periodic, an outlet 0.04 wide at xmax: its interface 0.5 - 0.04
+  // rounds so that a particle exactly on the face is 0.04 - 2e-17 deep, inside the buffer by
+  // depth, while the periodic wrap (which compares with the face) would carry it to x = 0.
+  OpenBoundaryZone out = outlet_xmax();
+  out.face = 0.5;
+  out.width = 0.04;
+  out.plane = out.face + out.inward * out.width;
+  const Vec3d on_face{0.5, 0, 0.1};
+  ASSERT_LT(out.depth(on_face), out.width);
+  ASSERT_EQ(wrapped_into_period(on_face.x, 0.0, 0.5), 0.0);
+  // An inlet on the same face (flow towards -x) keeps a particle there: one created a width
+  // behind a particle that only just entered the fluid can land on the face.
+  OpenBoundaryZone in = out;
+  in.inlet = true;
+  in.surface_z = 1;
+  const std::vector<OpenBoundaryZone> zones = {out, in};
+  ParticleSet p;
+  p.add(on_face, {0.4f, 0, 0}, 1000, ParticleKind::Buffer, 0);
+  p.add({0.49, 0, 0.1}, {0.4f, 0, 0}, 1000, ParticleKind::Buffer, 0);  // inside: stays
+  p.add(on_face, {-0.4f, 0, 0}, 1000, ParticleKind::Buffer, 1);
+  const OpenBoundaryCounts c = update_open_boundary_particles(p, zones);
+  EXPECT_EQ(c.removed, 1u);
+  EXPECT_TRUE(std::isnan(p.pos[0].x));
+  EXPECT_EQ(p.pos[1].x, 0.49);
+  EXPECT_EQ(p.pos[2].x, 0.5);
+  EXPECT_EQ(p.kind[2], ParticleKind::Buffer);
 }
 
 // ---------------------------------------------------------------------------------------------

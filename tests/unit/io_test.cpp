@@ -62,6 +62,10 @@ class TempDir {
   fs::path path_;
 };
 
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream s;
@@ -462,6 +466,47 @@ TEST(CsvSeries, RowsAreFlushedAtOnce) {
   EXPECT_EQ(read_text(csv.path()), "t [s]\n0.25\n");
   csv.append(std::vector<double>{0.5});
   EXPECT_EQ(read_text(csv.path()), "t [s]\n0.25\n0.5\n");
+}
+
+TEST(CsvSeries, ResumeKeepsTheRowsUpToTheCheckpointAndRefusesOtherColumns) {
+  TempDir tmp;
+  const fs::path file = tmp.path() / "series.csv";
+  const std::vector<netsph::CsvColumn> cols = {{"time", "s"}, {"Fx", "N/m"}, {"My", "N"}};
+  write_text(file, "time [s],Fx [N/m],My [N]\n0.1,1,2\n0.2,3,4\n0.30000000001,5,6\n");
+  {
+    netsph::CsvSeries csv(file, cols, 0.3);
+    csv.append(std::vector<double>{0.35, 7, 8});
+  }
+  // 0.30000000001 is 0.3 within the 9 printed digits' round-off: kept.
+  EXPECT_EQ(read_text(file),
+            "time [s],Fx [N/m],My [N]\n0.1,1,2\n0.2,3,4\n0.30000000001,5,6\n"
+            "0.35,7,8\n");
+  { netsph::CsvSeries csv(file, cols, 0.15); }
+  EXPECT_EQ(read_text(file), "time [s],Fx [N/m],My [N]\n0.1,1,2\n");
+  // Other columns: refused, the file untouched.
+  EXPECT_THROW(netsph::CsvSeries(file, {{"time", "s"}, {"Fz", "N/m"}, {"My", "N"}}, 0.2),
+               netsph::Error);
+  EXPECT_THROW(netsph::CsvSeries(file, {{"time", "s"}, {"Fx", "N/m"}}, 0.2), netsph::Error);
+  EXPECT_EQ(read_text(file), "time [s],Fx [N/m],My [N]\n0.1,1,2\n");
+}
+
+TEST(CsvSeries, ResumeAcceptsTheUnitLabelsBeforeTheirRelabelling) {
+  // A 2D run checkpointed before 2026-12-03 labelled its forces per metre N and its moments
+  // N m; the numbers are the same quantities, so the restart continues and relabels.
+  TempDir tmp;
+  const fs::path file = tmp.path() / "bodies.csv";
+  write_text(file, "time [s],step,Fx [N],My [N m]\n0.1,5,1,2\n0.2,9,3,4\n");
+  {
+    netsph::CsvSeries csv(file, {{"time", "s"}, {"step", ""}, {"Fx", "N/m"}, {"My", "N"}}, 0.1);
+    csv.append(std::vector<double>{0.15, 7, 5, 6});
+  }
+  EXPECT_EQ(read_text(file), "time [s],step,Fx [N/m],My [N]\n0.1,5,1,2\n0.15,7,5,6\n");
+  // Only the old labels of the same columns: other names, or another unit, are still refused.
+  write_text(file, "time [s],Fx [N],My [N m]\n0.1,1,2\n");
+  EXPECT_THROW(netsph::CsvSeries(file, {{"time", "s"}, {"Fz", "N/m"}, {"My", "N"}}, 0.1),
+               netsph::Error);
+  EXPECT_THROW(netsph::CsvSeries(file, {{"time", "s"}, {"Fx", "N/m"}, {"My", "m"}}, 0.1),
+               netsph::Error);
 }
 
 TEST(CsvSeries, UncreatableFileNamesThePath) {

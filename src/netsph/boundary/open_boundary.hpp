@@ -5,7 +5,8 @@
 // Each step (before the sort):
 //   - a buffer particle that crossed the interface into the fluid becomes fluid; at an inlet a
 //     new buffer particle takes its place one buffer width behind it (below the free surface);
-//   - a buffer particle deeper than the buffer width has left the domain: it is removed;
+//   - a buffer particle deeper than the buffer width has left the domain: it is removed (at an
+//     outlet also one exactly on the face);
 //   - a fluid particle that enters a buffer becomes a buffer particle of that zone (this is
 //     how outlets take the outflow; at an inlet it catches backflow).
 // After the sort the buffer particles get their state: imposed velocity at inlets (uniform or
@@ -71,6 +72,7 @@ struct ZoneGeometry {
   int axis = 0;
   double inward = 1, plane = 0, width = 0;
   double surface_z = 0;
+  double face = 0;  ///< the domain's face on axis: plane - inward * width up to round-off
 };
 
 /// What happens to a particle at the start of a step (the rules above).
@@ -94,7 +96,14 @@ NETSPH_HD BufferTransition buffer_transition(const ZoneGeometry* zones, std::siz
       return z.inlet && p.z <= z.surface_z ? BufferTransition::ToFluidAndCreate
                                            : BufferTransition::ToFluid;
     }
-    return d > z.width ? BufferTransition::Remove : BufferTransition::None;
+    // An outlet particle that reached the domain's face has left, also one exactly on it: on
+    // a periodic axis the step start's wrap (which compares with the face itself, not with
+    // plane and width) would otherwise carry it to the far face and into the fluid there. An
+    // inlet keeps one there: a particle created one width behind one that only just crossed
+    // the interface can round onto the face.
+    const bool on_or_beyond_face = (p[z.axis] - z.face) * z.inward <= 0;
+    const bool left = d > z.width || (!z.inlet && on_or_beyond_face);
+    return left ? BufferTransition::Remove : BufferTransition::None;
   }
   if (k == ParticleKind::Fluid) {
     for (std::size_t i = 0; i < nzones; ++i) {
@@ -123,6 +132,7 @@ struct OpenBoundaryZone {
   double inward = 1;  ///< +1: the zone is on the min face (flow into +axis), -1: max face
   double plane = 0;   ///< coordinate of the buffer-fluid interface along axis, m
   double width = 0;   ///< buffer width, m
+  double face = 0;    ///< coordinate of the domain face the buffer lies on, m
   bool velocity_imposed = true;
   double speed = 0;                          ///< m/s, normal speed (into the domain at inlets)
   std::vector<double> profile_z, profile_u;  ///< inlet profile over z, piecewise linear
@@ -131,7 +141,7 @@ struct OpenBoundaryZone {
 
   /// Depth of p into the buffer: 0 at the interface, `width` at the domain face, < 0 in the fluid.
   double depth(const Vec3d& p) const { return buffer_depth(axis, inward, plane, p); }
-  ZoneGeometry geometry() const { return {inlet, axis, inward, plane, width, surface_z}; }
+  ZoneGeometry geometry() const { return {inlet, axis, inward, plane, width, surface_z, face}; }
   /// Unit vector into the domain.
   Vec3d inward_normal() const {
     Vec3d n{};

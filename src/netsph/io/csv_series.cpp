@@ -59,6 +59,25 @@ void append_value(std::string& row, double v) {
   row.append(buf, static_cast<std::size_t>(len));
 }
 
+// Units whose label changed while the numbers did not: {label now, label before}. A file
+// written under the old label continues under the new one. 2026-12-03: a 2D case's forces
+// and moments, always per metre of depth, were labelled N and N m; now N/m and N.
+constexpr std::pair<std::string_view, std::string_view> kRelabelledUnits[] = {{"N/m", "N"},
+                                                                              {"N", "N m"}};
+
+/// The header `columns` had under the old unit labels.
+std::string header_before_relabelling(std::vector<CsvColumn> columns) {
+  for (CsvColumn& c : columns) {
+    for (const auto& [now, before] : kRelabelledUnits) {
+      if (c.unit == now) {
+        c.unit = before;
+        break;
+      }
+    }
+  }
+  return header_row(columns);
+}
+
 }  // namespace
 
 CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns)
@@ -86,12 +105,12 @@ CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns,
   std::string line, kept;
   std::getline(in, line);
   const std::string header = header_row(columns_);
-  if (line + "\n" != header) {
+  if (line + "\n" != header && line + "\n" != header_before_relabelling(columns_)) {
     throw Error(file_.string(),
                 "cannot continue this CSV file: its columns differ from the "
                 "run's (was it written by another case?)");
   }
-  kept = header;
+  kept = header;  // an old file's labels are brought up to date
   // Times are printed with 9 significant digits, so a row written at the checkpoint's own
   // time may read a little later than it: 1e-8 relative keeps it.
   while (std::getline(in, line)) {

@@ -20,7 +20,8 @@ class CsvSeries {
   CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns);
   /// A restarted run: keeps the existing file's rows whose first value (the time) is at most
   /// `resume_time` (rows a run wrote after its last checkpoint are dropped) and appends after
-  /// them. The header must be the one `columns` makes; a missing file starts a new one.
+  /// them. The header must be the one `columns` makes (or had before a unit was relabelled:
+  /// the file then gets the new labels); a missing file starts a new one.
   CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns, double resume_time);
   ~CsvSeries();
   CsvSeries(const CsvSeries&) = delete;

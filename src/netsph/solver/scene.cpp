@@ -141,7 +141,8 @@ OpenBoundaryZone make_zone(const OpenBoundarySpec& o, bool inlet, const CaseSpec
   const bool min_face = static_cast<int>(o.face) % 2 == 0;
   z.inward = min_face ? 1.0 : -1.0;
   z.width = o.layers * spec.simulation.dp;
-  z.plane = min_face ? spec.domain.min[z.axis] + z.width : spec.domain.max[z.axis] - z.width;
+  z.face = min_face ? spec.domain.min[z.axis] : spec.domain.max[z.axis];
+  z.plane = z.face + z.inward * z.width;
   z.velocity_imposed = inlet || o.velocity.has_value();
   z.speed = o.velocity.value_or(0.0);
   z.profile_z = o.profile_z;
