@@ -4,13 +4,15 @@
 // for); a linear field is reproduced inside the block (the lattice is symmetric about the
 // point) and biased towards the interior at the edge; the coverage is 1 inside, about 1/2 on
 // a flat face, 0 beyond the kernel's reach; walls and bodies are never sampled; a periodic
-// axis wraps the probe point.
+// axis wraps the probe point. The point loads (sph/fluid_point_loads.hpp) spread a force over
+// the same kernel weights the other way: the particles around the point take all of it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "netsph/backend/cpu/probe_pass.hpp"
+#include "netsph/sph/fluid_point_loads.hpp"
 
 namespace netsph {
 namespace {
@@ -126,6 +128,61 @@ TEST(ProbeSampling, PeriodicAxisWrapsThePoint) {
   EXPECT_NEAR(v0.coverage, 1.0, 0.02);
   EXPECT_NEAR(v0.velocity.x, v1.velocity.x, 1e-9);
   EXPECT_NEAR(v0.velocity.x, 0.5 * kL, 1e-4);  // halfway between 0 and L by symmetry
+}
+
+/// The force the fluid particles of `b` take from `loads`: sum_i m a_i.
+Vec3d force_taken(const Block& b, const FluidPointLoadSet& set) {
+  Vec3d f{};
+  for (std::size_t i = 0; i < b.p.size(); ++i) {
+    const Vec3f a = point_loads_acceleration<WendlandC2>(set, b.m.kernel, b.m.support2,
+                                                         b.grid.period(), b.p.pos[i]);
+    f += Vec3d(a) * static_cast<double>(b.m.mass);
+  }
+  return f;
+}
+
+TEST(PointLoads, TheFluidAroundThePointTakesTheWholeForce) {
+  // Uneven densities (the mass weight is sum m W, not rho0 sum V W); points inside, on a face
+  // (half the kernel in the fluid), across the periodic ends and two overlapping ones.
+  Block b = lattice([](const Vec3d&) { return kUniform; }, {true, false, false});
+  for (std::size_t i = 0; i < b.p.size(); ++i)
+    b.p.rho[i] = static_cast<Real>(1000 + 5 * std::sin(37.0 * static_cast<double>(i)));
+  const std::vector<Vec3d> points = {
+      {0.06, 0.06, 0.06}, {0.05, 0.0, 0.07}, {0.002, 0.06, 0.03}, {0.061, 0.062, 0.063}};
+  const std::vector<Vec3d> forces = {
+      {0.01, 0, 0}, {0, -0.02, 0.005}, {0.003, 0.004, -0.001}, {-0.007, 0, 0}};
+  std::vector<ShepardValue> values(points.size());
+  sample_points(b.m, b.grid, b.p, points, values);
+  std::vector<FluidPointLoad> loads;
+  for (std::size_t s = 0; s < points.size(); ++s) {
+    ASSERT_GT(values[s].coverage, 0.4) << s;
+    // sum V W rho = sum m W, the mass weight.
+    loads.push_back({points[s], forces[s] / (values[s].coverage * values[s].density)});
+    const FluidPointLoadSet one = point_load_set(&loads.back(), 1, b.m.support);
+    const Vec3d taken = force_taken(b, one);
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(taken[a], forces[s][a], 2e-6 * norm(forces[s])) << s;
+  }
+  const FluidPointLoadSet all = point_load_set(loads.data(), 4, b.m.support);
+  Vec3d total{};
+  for (const Vec3d& f : forces) total += f;
+  const Vec3d taken = force_taken(b, all);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(taken[a], total[a], 1e-7);
+  // Beyond the kernel's reach nothing: the box test and the support agree.
+  const FluidPointLoad far{{0.5, 0.5, 0.5}, {1, 1, 1}};
+  const FluidPointLoadSet far_set = point_load_set(&far, 1, b.m.support);
+  EXPECT_EQ(norm(force_taken(b, far_set)), 0.0);
+  // The box only skips particles that take nothing: an unbounded box gives the same.
+  FluidPointLoadSet unbounded = all;
+  unbounded.reach = {1e9, 1e9, 1e9};
+  for (std::size_t i = 0; i < b.p.size(); ++i) {
+    const Vec3f a0 = point_loads_acceleration<WendlandC2>(all, b.m.kernel, b.m.support2,
+                                                          b.grid.period(), b.p.pos[i]);
+    const Vec3f a1 = point_loads_acceleration<WendlandC2>(unbounded, b.m.kernel, b.m.support2,
+                                                          b.grid.period(), b.p.pos[i]);
+    ASSERT_EQ(a0.x, a1.x) << i;
+    ASSERT_EQ(a0.y, a1.y) << i;
+    ASSERT_EQ(a0.z, a1.z) << i;
+  }
 }
 
 }  // namespace

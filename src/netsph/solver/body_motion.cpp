@@ -9,8 +9,9 @@ namespace netsph {
 
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
                     std::vector<CoupledNet>& nets, double time, bool corrector, double dt,
-                    const FluidSampler& sample) {
+                    const FluidSampler& sample, std::vector<FluidPointLoad>& water_loads) {
   const Vec3d g = spec.fluid.gravity;
+  water_loads.clear();
   // Where the stage has the bodies, before they move.
   if (!nets.empty()) sample_sinker_flows(nets, bodies, sample);
   for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
@@ -39,7 +40,10 @@ void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
     }
   }
   // Net knots: translation by the twines and the fluid, sub-cycled over the stage.
-  if (!nets.empty()) advance_coupled_nets(nets, bodies, corrector ? dt : 0.5 * dt);
+  if (!nets.empty()) {
+    advance_coupled_nets(nets, bodies, corrector ? dt : 0.5 * dt);
+    add_sinker_reactions(nets, water_loads);
+  }
 }
 
 std::string body_wider_than_half_period(const CaseSpec& spec, const RigidBody& b) {

@@ -17,10 +17,12 @@ namespace netsph {
 /// its step-start state (saved here in the predictor): fixed bodies stay, prescribed ones
 /// follow their velocity history, floating ones move under fluid, contact and external loads
 /// and gravity; net knots are then advanced by the knot-spring solver, their sinker bars'
-/// drag from the fluid `sample` gives at the bars. `time` is the step's start.
+/// drag from the fluid `sample` gives at the bars. `time` is the step's start. `water_loads`
+/// receives what the stage's modelled parts put on the water (the sinker bars' reaction),
+/// for the step to add to the fluid's accelerations before it moves the fluid.
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
                     std::vector<CoupledNet>& nets, double time, bool corrector, double dt,
-                    const FluidSampler& sample);
+                    const FluidSampler& sample, std::vector<FluidPointLoad>& water_loads);
 
 /// What is wrong, in words, if body `b` is as wide as half a periodic axis's period or wider
 /// (judged by its particle farthest from the centre of mass, so whatever its rotation); empty

@@ -68,8 +68,12 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
     knots += c.model.knots.size();
     for (const NetKnot& k : c.model.knots) c.initial.push_back(k.position);
     c.water_density = env.water_density;
+    c.reaction_offset =
+        kSinkerReactionOffsetSupports * 2 * expanded.simulation.h_over_dp * expanded.simulation.dp;
     c.sinker_flow.assign(c.model.knots.size(), Vec3d{});
     c.sinker_wet.assign(c.model.knots.size(), 0);
+    c.sinker_reach.assign(c.model.knots.size(), SinkerSamples{});
+    c.sinker_stage_drag.assign(c.model.knots.size(), Vec3d{});
     nets.push_back(std::move(c));
   }
   std::size_t first = expanded.bodies.size() - knots;
@@ -91,8 +95,10 @@ void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidB
   std::vector<Vec3d> points;
   for (CoupledNet& c : nets) {
     NetModel& net = c.model;
-    for (std::size_t k = 0; k < net.knots.size(); ++k)
+    for (std::size_t k = 0; k < net.knots.size(); ++k) {
       net.knots[k].position = bodies[c.first_body + k].state.com;
+      net.knots[k].velocity = bodies[c.first_body + k].state.vel;
+    }
     for (std::size_t k = 0; k < net.knots.size(); ++k) {
       if (net.knots[k].sinker_length <= 0) continue;
       Share& s = shares.emplace_back(Share{&c, k, {}});
@@ -103,18 +109,50 @@ void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidB
   if (points.empty()) return;
   std::vector<ShepardValue> values(points.size());
   sample(points, values);
-  // Each share's flow: the weighted mean over its points in the water.
+  // Each share's flow: the weighted mean over its points in the water. Its reaction goes to
+  // the water by the same weights, each wet point's part moved downstream along the share's
+  // drag by CoupledNet::reaction_offset (below).
+  std::vector<Vec3d> downstream(points.size());
   const ShepardValue* v = values.data();
+  Vec3d* moved = downstream.data();
   for (const Share& s : shares) {
     Vec3d sum{};
     double weight = 0;
-    for (int i = 0; i < s.samples.count; ++i, ++v) {
-      if (v->coverage < kSinkerWetCoverage) continue;
-      sum += v->velocity * s.samples.weights[i];
+    for (int i = 0; i < s.samples.count; ++i) {
+      if (v[i].coverage < kSinkerWetCoverage) continue;
+      sum += v[i].velocity * s.samples.weights[i];
       weight += s.samples.weights[i];
     }
-    s.net->sinker_wet[s.knot] = weight > 0;
-    s.net->sinker_flow[s.knot] = weight > 0 ? sum / weight : Vec3d{};
+    CoupledNet& c = *s.net;
+    c.sinker_wet[s.knot] = weight > 0;
+    c.sinker_flow[s.knot] = weight > 0 ? sum / weight : Vec3d{};
+    const Vec3d drag = sinker_drag(c.model, c.model.knots[s.knot], c.sinker_flow[s.knot], 1.0);
+    const double size = norm(drag);
+    const Vec3d along = size > 0 ? drag / size : Vec3d{};
+    SinkerSamples& reach = c.sinker_reach[s.knot];
+    reach = s.samples;
+    for (int i = 0; i < s.samples.count; ++i) {
+      const bool wet = v[i].coverage >= kSinkerWetCoverage;
+      reach.weights[i] = wet ? s.samples.weights[i] / weight : 0;
+      moved[i] = s.samples.points[i] + along * c.reaction_offset;
+    }
+    v += s.samples.count;
+    moved += s.samples.count;
+  }
+  // The fluid's mass weight sum_j m_j W where each part goes (sum V W rho, sph/shepard.hpp):
+  // downstream where the water is, else at the sample point itself.
+  std::vector<ShepardValue> there(points.size());
+  sample(downstream, there);
+  std::size_t p = 0;
+  for (const Share& s : shares) {
+    SinkerSamples& reach = s.net->sinker_reach[s.knot];
+    for (int i = 0; i < reach.count; ++i, ++p) {
+      if (reach.weights[i] <= 0) continue;
+      const bool moves = there[p].coverage >= kSinkerWetCoverage;
+      const ShepardValue& at = moves ? there[p] : values[p];
+      if (moves) reach.points[i] = downstream[p];
+      reach.weights[i] /= at.coverage * at.density;
+    }
   }
 }
 
@@ -132,15 +170,30 @@ void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>&
                              : Vec3d{};
     };
     // The sinker's drag on each sub-step's knot velocity: the bar damps the net's swinging.
+    // Velocity Verlet applies the loads of its calls with trapezoidal weights (the first and
+    // the last half), so that is the stage's mean drag the water takes back.
+    const std::size_t nk = net.knots.size();
+    std::vector<Vec3d> drag_sum(nk), drag_first(nk), drag_last(nk);
+    int calls = 0;
     const auto fluid = [&](const NetModel& n, std::vector<Vec3d>& f) {
       for (std::size_t k = 0; k < n.knots.size(); ++k) {
         const RigidBody& b = bodies[c.first_body + k];
-        f[k] += b.fluid_force + b.contact_force + sinker(n, k);
+        const Vec3d drag = sinker(n, k);
+        f[k] += b.fluid_force + b.contact_force + drag;
+        if (calls == 0) drag_first[k] = drag;
+        drag_last[k] = drag;
+        drag_sum[k] += drag;
       }
+      ++calls;
     };
     KnotSpringSolver solver(net);
     solver.advance(stage_dt, fluid);
-    for (std::size_t k = 0; k < net.knots.size(); ++k) {
+    for (std::size_t k = 0; k < nk; ++k) {
+      c.sinker_stage_drag[k] =
+          calls >= 2 ? (drag_sum[k] - (drag_first[k] + drag_last[k]) * 0.5) / double(calls - 1)
+                     : Vec3d{};
+    }
+    for (std::size_t k = 0; k < nk; ++k) {
       RigidBody& b = bodies[c.first_body + k];
       b.modelled_force = sinker(net, k);
       b.modelled_torque =
@@ -148,6 +201,18 @@ void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>&
       if (b.motion != BodyMotion::Floating) continue;
       b.state.com = net.knots[k].position;
       b.state.vel = net.knots[k].velocity;
+    }
+  }
+}
+
+void add_sinker_reactions(const std::vector<CoupledNet>& nets, std::vector<FluidPointLoad>& loads) {
+  for (const CoupledNet& c : nets) {
+    for (std::size_t k = 0; k < c.sinker_reach.size(); ++k) {
+      const SinkerSamples& reach = c.sinker_reach[k];
+      const Vec3d reaction = -c.sinker_stage_drag[k];
+      for (int i = 0; i < reach.count; ++i) {
+        if (reach.weights[i] > 0) loads.push_back({reach.points[i], reaction * reach.weights[i]});
+      }
     }
   }
 }

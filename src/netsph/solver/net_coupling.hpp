@@ -15,15 +15,23 @@
 // of the bar, at its ends midway to the neighbours and below the knot (net/current_loads.hpp,
 // sinker_sample_points), and the bar takes cylinder drag on the mean of the water's velocity
 // there relative to the knot (sinker_drag), in every sub-step of the knot-spring solver. Its
-// reaction on the water is not applied: the bar's wake is below the resolution, and its drag
-// is a few per cent of the net's (about 0.07 N of the reduced Bi 2014 net's 0.9 N). The knot
-// bodies report it apart from the resolved fluid force (RigidBody::modelled_force), and the
-// net's force group adds it: a load cell on the net's frame reads both.
+// reaction goes back to the water (sph/fluid_point_loads.hpp): the stage's drag as the
+// sub-steps applied it, spread by kernel weight over the fluid one kernel support (2h)
+// downstream of each wet sample point, along the drag, so the water loses the momentum the
+// net gains. Not at the sample points themselves: there it would slow the very water the drag
+// is taken from (the self-induced velocity of two-way coupled point forces, Horwitz & Mani
+// 2016), and the tethered knot's bar took 0.062 N instead of 0.075 N; one support
+// downstream its kernel no longer reaches the sample point (only the edge of the water the
+// sample averages) and the bar takes 0.075 N, as without the reaction. The knot bodies report the
+// drag apart from the resolved fluid force (RigidBody::modelled_force), and the net's force group
+// adds it: a load cell on the net's frame reads both.
 #include <vector>
 
 #include "netsph/bodies/rigid_body.hpp"
 #include "netsph/case/case_spec.hpp"
+#include "netsph/net/current_loads.hpp"
 #include "netsph/net/net_model.hpp"
+#include "netsph/sph/fluid_point_loads.hpp"
 #include "netsph/sph/fluid_sampler.hpp"
 
 namespace netsph {
@@ -33,12 +41,24 @@ struct CoupledNet {
   std::size_t first_body = 0;   ///< body index of knot 0; knot k is body first_body + k
   std::vector<Vec3d> initial;   ///< undeformed knot positions
   double water_density = 1000;  ///< kg/m^3, for the sinker's drag
+  /// How far downstream of the bar, along its drag, its reaction goes into the water, m
+  /// (kSinkerReactionOffsetSupports kernel supports; 0 in tests without a fluid).
+  double reaction_offset = 0;
   /// The water's velocity along each knot's share of the sinker bar at the stage being
   /// advanced, m/s: the weighted mean over its sample points in the water (Shepard coverage
   /// at least 1/2); wet: whether any is (a bar above a free surface takes no drag). Knots
   /// without a share: zero, false.
   std::vector<Vec3d> sinker_flow;
   std::vector<char> sinker_wet;
+  /// Where each knot's share of the bar gives its reaction to the water at this stage: its
+  /// wet sample points moved reaction_offset downstream (or, where the water does not reach
+  /// there, the sample points themselves), each weight turned into the point's part of the
+  /// share (the wet points' weights normalised; 0 at a dry point) over the fluid's mass weight
+  /// there, sum_j m_j W (kg/m^3; the weight in m^3/kg).
+  std::vector<SinkerSamples> sinker_reach;
+  /// Each knot's sinker drag over the stage as the knot-spring sub-steps applied it (their
+  /// trapezoidal mean), N: what the water takes back.
+  std::vector<Vec3d> sinker_stage_drag;
 };
 
 /// The case with one [[body]] appended per knot of every [[net]] (after the case's own
@@ -49,9 +69,14 @@ CaseSpec spec_with_net_knots(const CaseSpec& spec);
 std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded);
 
 /// Samples the fluid along every net's sinker bar, where the knot bodies' present states put it,
-/// into CoupledNet::sinker_flow and sinker_wet. A stage calls it before the bodies move.
+/// into CoupledNet::sinker_flow and sinker_wet, and downstream of it for sinker_reach. A
+/// stage calls it before the bodies move.
 void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidBody>& bodies,
                          const FluidSampler& sample);
+
+/// How far downstream of its sample points a sinker bar's reaction goes into the water, in
+/// kernel supports (2h).
+inline constexpr double kSinkerReactionOffsetSupports = 1.0;
 
 /// The Shepard coverage from which a sinker bar counts as in the water.
 inline constexpr double kSinkerWetCoverage = 0.5;
@@ -59,8 +84,13 @@ inline constexpr double kSinkerWetCoverage = 0.5;
 /// One stage for every net: knot positions and velocities from the bodies' step-start state,
 /// advanced by `stage_dt` under each knot body's fluid and contact force and its sinker's
 /// drag (at the sampled flow), written back to the bodies' state; the sinker's drag at the
-/// stage's end goes to the knot bodies' modelled_force and modelled_torque.
+/// stage's end goes to the knot bodies' modelled_force and modelled_torque, its mean over the
+/// stage to CoupledNet::sinker_stage_drag.
 void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>& bodies,
                           double stage_dt);
+
+/// Appends the reaction of every sinker's stage drag on the water, at the points where the
+/// stage sampled it (after advance_coupled_nets).
+void add_sinker_reactions(const std::vector<CoupledNet>& nets, std::vector<FluidPointLoad>& loads);
 
 }  // namespace netsph

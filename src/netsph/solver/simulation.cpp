@@ -10,6 +10,7 @@
 #include "netsph/boundary/mdbc.hpp"
 #include "netsph/solver/body_motion.hpp"
 #include "netsph/solver/step_settings.hpp"
+#include "netsph/sph/fluid_point_loads.hpp"
 #include "netsph/sph/fluid_sampler.hpp"
 
 namespace netsph {
@@ -136,10 +137,35 @@ void Simulation::reduce_body_forces() {
 }
 
 void Simulation::advance_bodies(bool corrector, double dt) {
-  netsph::advance_bodies(spec_, scene_.bodies, nets_, time_, corrector, dt,
-                         [this](std::span<const Vec3d> points, std::span<ShepardValue> values) {
-                           sample_fluid_at_stage(points, values);
-                         });
+  netsph::advance_bodies(
+      spec_, scene_.bodies, nets_, time_, corrector, dt,
+      [this](std::span<const Vec3d> points, std::span<ShepardValue> values) {
+        sample_fluid_at_stage(points, values);
+      },
+      water_loads_);
+  add_water_loads();
+}
+
+void Simulation::add_water_loads() {
+  if (water_loads_.empty()) return;
+  const FluidModel& m = scene_.model;
+  const FluidPointLoadSet set = point_load_set(
+      water_loads_.data(), static_cast<std::uint32_t>(water_loads_.size()), m.support);
+  const Vec3d period = grid_.period();
+  const auto n = static_cast<std::int64_t>(p_.size());
+  // Every particle here, a distributed run's halo copies included: a copy takes what its owner
+  // takes (the same formula at the same position), as it must, since its half-step velocity
+  // feeds the owned particles' corrector rates; the mass weights the loads carry were summed
+  // over owned particles only, so the run's fluid takes each load once.
+  with_kernel(m.kernel_type, [&](auto kernel) {
+    using K = decltype(kernel);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) {
+      if (p_.kind[i] != ParticleKind::Fluid) continue;
+      acc_[i] += point_loads_acceleration<K>(set, m.kernel, m.support2, period, p_.pos[i]);
+    }
+    return 0;
+  });
 }
 
 void Simulation::sample_fluid_at_stage(std::span<const Vec3d> points,

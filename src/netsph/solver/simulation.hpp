@@ -205,8 +205,11 @@ class Simulation {
   double place_body_particles(bool from_step_start);
   /// Fluid and contact force and torque on every body from the last rates pass.
   void reduce_body_forces();
-  /// Advances every body's state to the half step (predictor) or the full step.
+  /// Advances every body's state to the half step (predictor) or the full step, and adds what
+  /// the modelled parts put on the water to the fluid's accelerations (add_water_loads).
   void advance_bodies(bool corrector, double dt);
+  /// acc_ of the fluid particles += the stage's water_loads_ (sph/fluid_point_loads.hpp).
+  void add_water_loads();
   /// The fluid at `points` as the stage has it (its positions and cell table), summed over the
   /// processes of a distributed run: what the nets' sinker bars take their flow from.
   void sample_fluid_at_stage(std::span<const Vec3d> points, std::span<ShepardValue> values);
@@ -237,7 +240,8 @@ class Simulation {
   std::size_t initial_fluid_ = 0;
   std::vector<WallKinematics> walls_;  // by wall index
   ContactModel contact_model_;
-  std::vector<Vec3f> contact_;  // contact acceleration of body particles
+  std::vector<Vec3f> contact_;               // contact acceleration of body particles
+  std::vector<FluidPointLoad> water_loads_;  // the stage's sinker reactions on the water
   bool shift_on_ = false;
   ShiftingParams shift_params_;
   ShiftingSums shift_sums_;

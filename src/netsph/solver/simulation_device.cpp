@@ -19,14 +19,15 @@ void Simulation::start_device() {
   DeviceSetup setup = device_setup(spec_, scene_);
   setup.advance_bodies = [this](bool corrector, double time, double dt,
                                 const std::vector<DeviceBodyLoads>& loads,
-                                std::vector<RigidState>& states, const FluidSampler& sample) {
+                                std::vector<RigidState>& states, const FluidSampler& sample,
+                                std::vector<FluidPointLoad>& water_loads) {
     for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
       const double* f = loads[b].f;
       RigidBody& body = scene_.bodies[b];
       body.fluid_force = {f[0], f[1], f[2]}, body.fluid_torque = {f[3], f[4], f[5]};
       body.contact_force = {f[6], f[7], f[8]}, body.contact_torque = {f[9], f[10], f[11]};
     }
-    netsph::advance_bodies(spec_, scene_.bodies, nets_, time, corrector, dt, sample);
+    netsph::advance_bodies(spec_, scene_.bodies, nets_, time, corrector, dt, sample, water_loads);
     for (std::size_t b = 0; b < scene_.bodies.size(); ++b) states[b] = scene_.bodies[b].state;
   };
   bool moving = false;

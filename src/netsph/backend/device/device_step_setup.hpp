@@ -8,6 +8,7 @@
 
 #include "netsph/backend/device/device_kernels.hpp"
 #include "netsph/neighbors/grid_index.hpp"
+#include "netsph/sph/fluid_point_loads.hpp"
 #include "netsph/sph/fluid_sampler.hpp"
 #include "netsph/sph/time_step.hpp"
 
@@ -49,10 +50,12 @@ struct DeviceSetup {
   bool rates_trimmed = true;
   /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
   /// holds the bodies' states on entry and receives the new ones; `sample` samples the fluid
-  /// as the stage has it (DeviceStepper::sample_fluid). `time` is the step's start.
+  /// as the stage has it (DeviceStepper::sample_fluid); `water_loads` receives what the
+  /// modelled parts put on the water, for the stepper to add to the fluid's accelerations.
+  /// `time` is the step's start.
   std::function<void(bool corrector, double time, double dt,
                      const std::vector<DeviceBodyLoads>& loads, std::vector<RigidState>& states,
-                     const FluidSampler& sample)>
+                     const FluidSampler& sample, std::vector<FluidPointLoad>& water_loads)>
       advance_bodies;
 };
 

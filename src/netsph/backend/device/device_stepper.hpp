@@ -7,9 +7,9 @@
 //   sort of keys, gather of every array); cell ranges; body particles placed; buffer state; mDBC
 //   state of walls and bodies; view -> rates
 //   (+ contacts) -> dt (max reductions); save the start; body loads -> bodies' predictor (on
-//   the host) -> predictor, body particles placed [re-sort if a particle moved past the grid
-//   skin]; view -> rates (+ shifting, contacts) -> body loads -> bodies' corrector ->
-//   corrector, body particles placed; non-finite check.
+//   the host) -> water loads -> predictor, body particles placed [re-sort if a particle moved
+//   past the grid skin]; view -> rates (+ shifting, contacts) -> body loads -> bodies'
+//   corrector -> water loads -> corrector, body particles placed; non-finite check.
 //
 // Supported: fluid particles, walls (DBC or mDBC, any slip, moving), open boundaries (buffer
 // transitions, inlet particles created by a scan of flags, imposed or extrapolated buffer
@@ -20,7 +20,9 @@
 // Bodies and nets stay on the host: after each rates pass the step reduces every body's force
 // and torque on the device (one pass over particles, atomics per body), copies those 12
 // numbers per body back, lets the host advance the bodies (hooks.advance_bodies, the CPU
-// solver's code) and copies their new states in; the particles then follow on the device.
+// solver's code) and copies their new states in, and adds the few point loads the host's
+// modelled parts put on the water (sinker bars) to the fluid's accelerations; the particles
+// then follow on the device.
 //
 // Memory: the state (positions, velocities, densities, kinds, ids, groups; the solids' ghost
 // vectors are tables of the solids, DeviceGhosts), the
@@ -568,12 +570,38 @@ class DeviceStepper {
       }
     });
     Exec::download(loads_host_.data(), loads_, nb);
-    s_.advance_bodies(corrector, time_, dt, loads_host_, states_,
-                      [this](std::span<const Vec3d> points, std::span<ShepardValue> values) {
-                        sample_fluid(points, values);
-                      });
+    s_.advance_bodies(
+        corrector, time_, dt, loads_host_, states_,
+        [this](std::span<const Vec3d> points, std::span<ShepardValue> values) {
+          sample_fluid(points, values);
+        },
+        water_loads_host_);
     for (std::size_t b = 0; b < nb; ++b) s_.bodies[b].state = states_[b];
     Exec::upload(bodies_, s_.bodies.data(), nb);
+    if (s_.model.kernel_type == KernelType::Wendland) {
+      add_water_loads<WendlandC2>();
+    } else {
+      add_water_loads<CubicSpline>();
+    }
+  }
+
+  /// The fluid's accelerations += the stage's water loads (Simulation::add_water_loads).
+  template <class K>
+  void add_water_loads() {
+    const std::size_t nl = water_loads_host_.size();
+    if (nl == 0) return;
+    Exec::upload(water_loads_, water_loads_host_.data(), nl);
+    FluidPointLoadSet set =
+        point_load_set(water_loads_host_.data(), static_cast<std::uint32_t>(nl), s_.model.support);
+    set.loads = water_loads_.data();
+    const DeviceState st = state();
+    Vec3f* acc = step_arrays().rates.acc;
+    const FluidModel m = s_.model;
+    const Vec3d period = s_.grid.period;
+    Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      if (st.kind[i] != ParticleKind::Fluid) return;
+      acc[i] += point_loads_acceleration<K>(set, m.kernel, m.support2, period, st.pos[i]);
+    });
   }
 
   /// The fluid at `points` as the stage has it (its positions and cell table): a few points
@@ -753,6 +781,8 @@ class DeviceStepper {
   Buffer<Vec3d> sample_points_;  ///< sample_fluid's points and sums
   Buffer<ShepardSums> sample_sums_;
   std::vector<ShepardSums> sample_sums_host_;
+  std::vector<FluidPointLoad> water_loads_host_;  ///< the stage's loads on the water
+  Buffer<FluidPointLoad> water_loads_;
 };
 
 }  // namespace netsph

@@ -1,0 +1,141 @@
+// One coupled stage of a net without the SPH fluid (solver/net_coupling.hpp): the sinker bar
+// takes its drag in every knot-spring sub-step, and the water gets back exactly the momentum
+// the net got from it. A free net (no anchored edge) has only internal twine forces besides
+// its weight and the bar's drag, so its momentum changes by stage_dt (weight + the stage's
+// drag) to round-off; the reaction on the water, spread over the wet sample points, adds up
+// to minus that drag, one kernel support downstream of the bar where the water is.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "netsph/net/net_generator.hpp"
+#include "netsph/solver/net_coupling.hpp"
+
+namespace netsph {
+namespace {
+
+CoupledNet free_net_with_sinker() {
+  NetSpec s;
+  s.name = "net";
+  s.width = s.height = 0.3;
+  s.twine_length = 0.02;
+  s.twine_diameter = 0.0026;
+  s.mesh_grouping = 5;
+  s.layout = KnotLayout::Inset;
+  s.youngs_modulus = 1e8;
+  s.sinker = {0.3, 0.006, 8610, 1.2};
+  CoupledNet c;
+  c.model = generate_net(s, {});
+  for (const NetKnot& k : c.model.knots) c.initial.push_back(k.position);
+  const std::size_t n = c.model.knots.size();
+  c.sinker_flow.assign(n, Vec3d{});
+  c.sinker_wet.assign(n, 0);
+  c.sinker_reach.assign(n, SinkerSamples{});
+  c.sinker_stage_drag.assign(n, Vec3d{});
+  return c;
+}
+
+TEST(NetStage, TheWaterTakesBackTheMomentumTheSinkerDragGaveTheNet) {
+  std::vector<CoupledNet> nets{free_net_with_sinker()};
+  CoupledNet& c = nets[0];
+  const NetModel& net = c.model;
+  const std::size_t n = net.knots.size();
+  std::vector<RigidBody> bodies(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    bodies[k].motion = BodyMotion::Floating;
+    bodies[k].state.com = net.knots[k].position;
+    // Moving upstream and swinging: the drag changes over the stage's sub-steps.
+    const double x = static_cast<double>(k);
+    bodies[k].state.vel = {-0.1 - 0.02 * std::sin(3.0 * x), 0.01 * std::cos(2.0 * x), 0};
+    bodies[k].start = bodies[k].state;
+  }
+  // The water at 0.3 m/s, rising at 0.5 m/s per metre along the bar (so each share's drag
+  // points its own way), its density 1000 + 1000 x kg/m^3 (so each mass weight tells where it
+  // was sampled), coverage 0.9 at the bar and 0.95 downstream. The first sample point is dry
+  // (coverage below 1/2): it takes no reaction. The reaction goes 3 cm downstream, except for
+  // the second point, whose downstream point is dry: its part stays at the bar.
+  c.reaction_offset = 0.03;
+  const auto flow = [](const Vec3d& x) { return Vec3d{0.3, 0, 0.5 * x.y}; };
+  const auto density = [](const Vec3d& x) { return 1000 + 1000 * x.x; };
+  int sampled = 0, calls = 0;
+  const FluidSampler sampler = [&](std::span<const Vec3d> points, std::span<ShepardValue> v) {
+    ++calls;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      v[i].coverage = calls == 1 ? (i == 0 ? 0.3 : 0.9) : (i == 1 ? 0.2 : 0.95);
+      v[i].velocity = flow(points[i]);
+      v[i].density = density(points[i]);
+    }
+    sampled = static_cast<int>(points.size());
+  };
+  sample_sinker_flows(nets, bodies, sampler);
+  ASSERT_EQ(calls, 2);    // the bar, then downstream
+  ASSERT_EQ(sampled, 9);  // three bottom knots, three points each (inset layout)
+  int share = 0, moved = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const NetKnot& knot = net.knots[k];
+    if (knot.sinker_length <= 0) continue;
+    SinkerSamples bar;
+    ASSERT_EQ(sinker_sample_points(net, knot, bar), 3);
+    // The share's flow: the weighted mean over its wet points; the drag's direction from it.
+    Vec3d mean{};
+    double wet = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (share == 0 && i == 0) continue;
+      mean += flow(bar.points[i]) * bar.weights[i];
+      wet += bar.weights[i];
+    }
+    mean = mean / wet;
+    EXPECT_NEAR(norm(c.sinker_flow[k] - mean), 0, 1e-15) << k;
+    Vec3d u = mean - bodies[k].state.vel;
+    u = u - net.across * dot(u, net.across);
+    const Vec3d along = u / norm(u);
+    const SinkerSamples& reach = c.sinker_reach[k];
+    ASSERT_EQ(reach.count, 3);
+    for (int i = 0; i < 3; ++i) {
+      const int global = 3 * share + i;
+      if (global == 0) {
+        EXPECT_EQ(reach.weights[i], 0.0);  // dry
+        continue;
+      }
+      const bool stays = global == 1;  // its downstream point is dry
+      const Vec3d expected = stays ? bar.points[i] : bar.points[i] + along * 0.03;
+      EXPECT_NEAR(norm(reach.points[i] - expected), 0, 1e-12) << k << " " << i;
+      const double mass_weight = (stays ? 0.9 : 0.95) * density(expected);
+      EXPECT_NEAR(reach.weights[i], bar.weights[i] / wet / mass_weight, 1e-15) << k << " " << i;
+      moved += !stays;
+    }
+    ++share;
+  }
+  EXPECT_EQ(moved, 7);
+
+  const double stage_dt = 2e-3;
+  advance_coupled_nets(nets, bodies, stage_dt);
+  Vec3d momentum{}, impulse{}, drag{}, end_drag{};
+  for (std::size_t k = 0; k < n; ++k) {
+    momentum += (bodies[k].state.vel - bodies[k].start.vel) * net.knots[k].mass;
+    impulse += (net.knots[k].constant_force + c.sinker_stage_drag[k]) * stage_dt;
+    drag += c.sinker_stage_drag[k];
+    end_drag += bodies[k].modelled_force;
+  }
+  std::printf("stage drag (%.6f, %.6f, %.6f) N, at the stage's end (%.6f, %.6f, %.6f) N\n", drag.x,
+              drag.y, drag.z, end_drag.x, end_drag.y, end_drag.z);
+  ASSERT_GT(drag.x, 0.1);  // 0.3 m of 6 mm bar at about 0.4 m/s relative: about 0.17 N
+  // The sub-steps changed the drag: the end's differs from the stage's mean by far more than
+  // the tolerance below, so the mean must be the one the sub-steps applied.
+  ASSERT_GT(norm(end_drag - drag) * stage_dt, 100 * 1e-9 * norm(impulse));
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(momentum[a], impulse[a], 1e-9 * norm(impulse)) << a;
+
+  // The reaction: minus the stage's drag, at the wet points only; per_weight times the mass
+  // weight there (coverage x density) is each point's force.
+  std::vector<FluidPointLoad> loads;
+  add_sinker_reactions(nets, loads);
+  ASSERT_EQ(static_cast<int>(loads.size()), sampled - 1);
+  Vec3d given{};
+  for (std::size_t l = 0; l < loads.size(); ++l)
+    given += loads[l].per_weight * ((l == 0 ? 0.9 : 0.95) * density(loads[l].point));
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(given[a], -drag[a], 1e-12) << a;
+}
+
+}  // namespace
+}  // namespace netsph
