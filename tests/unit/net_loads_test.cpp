@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "net_test_specs.hpp"
 #include "netsph/net/current_loads.hpp"
 #include "netsph/net/equivalent_knot.hpp"
 #include "netsph/net/net_generator.hpp"
@@ -152,19 +153,7 @@ TEST(ScreenLoads, FlatNetFacingTheFlowFeelsTheScreenDrag) {
   EXPECT_NEAR(std::abs(total.y) + std::abs(total.z), 0.0, 1e-15);
 }
 
-// A 0.3 m net of 3 x 3 numerical meshes with a 6 mm sinker bar along its bottom edge.
-NetSpec net_with_sinker(KnotLayout layout) {
-  NetSpec s;
-  s.name = "net";
-  s.width = s.height = 0.3;
-  s.twine_length = 0.02;
-  s.twine_diameter = 0.0026;
-  s.mesh_grouping = 5;
-  s.layout = layout;
-  s.fixed_edges = {false, true, false, false};
-  s.sinker = {0.3, 0.006, 8610, 1.2};
-  return s;
-}
+using test::net_with_sinker;
 
 // The bar hangs on the net's bottom edge: half a mesh below the bottom knots in the inset
 // layout (knots at the mesh centres), at them in the crossings layout; once the net swings,

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "net_test_specs.hpp"
 #include "netsph/net/net_generator.hpp"
 #include "netsph/solver/net_coupling.hpp"
 
@@ -16,15 +17,9 @@ namespace netsph {
 namespace {
 
 CoupledNet free_net_with_sinker() {
-  NetSpec s;
-  s.name = "net";
-  s.width = s.height = 0.3;
-  s.twine_length = 0.02;
-  s.twine_diameter = 0.0026;
-  s.mesh_grouping = 5;
-  s.layout = KnotLayout::Inset;
+  NetSpec s = test::net_with_sinker(KnotLayout::Inset);
+  s.fixed_edges = {};
   s.youngs_modulus = 1e8;
-  s.sinker = {0.3, 0.006, 8610, 1.2};
   CoupledNet c;
   c.model = generate_net(s, {});
   for (const NetKnot& k : c.model.knots) c.initial.push_back(k.position);
