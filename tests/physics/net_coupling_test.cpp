@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "case_runs.hpp"
 #include "netsph/backend/cpu/probe_pass.hpp"
@@ -177,8 +178,10 @@ Vec3d fluid_and_knot_momentum(const Simulation& sim) {
   return p;
 }
 
-void expect_momentum_kept(StepBackend backend) {
-  Simulation sim(read_case_string(kPeriodicNetBox, "test:periodic_net_box"), backend);
+void expect_momentum_kept(StepBackend backend, const std::string& layout = "inset") {
+  Simulation sim(read_case_string(kPeriodicNetBox, "test:periodic_net_box",
+                                  {"net.0.knot_layout=\"" + layout + "\""}),
+                 backend);
   ASSERT_EQ(sim.nets().size(), 1u);
   const Vec3d p0 = fluid_and_knot_momentum(sim);
   Vec3d bar_impulse{};
@@ -193,7 +196,11 @@ void expect_momentum_kept(StepBackend backend) {
       "momentum %.6f kg m/s; changed by (%.2e, %.2e, %.2e); the bar's impulse "
       "(%.2e, %.2e, %.2e) kg m/s\n",
       p0.x, change.x, change.y, change.z, bar_impulse.x, bar_impulse.y, bar_impulse.z);
-  ASSERT_GT(bar_impulse.x, 5e-4);  // the bar took drag: about 0.06 N over 30 ms
+  // The bar took drag: 0.054 N on the knots at rest, less as the free net starts to move
+  // (measured: 43% of that over these 30 steps in the inset layout, 30% in the crossings
+  // layout); a bar sampled inside its knots would count as dry and take none.
+  const double at_rest = 0.5 * 1000 * 1.2 * 0.01 * 0.1 * 0.3 * 0.3 * sim.time();
+  ASSERT_GT(bar_impulse.x, 0.1 * at_rest);
   EXPECT_LT(norm(change), 0.01 * norm(bar_impulse));
 }
 
@@ -203,6 +210,12 @@ TEST(NetCoupling, InAPeriodicBoxTheWaterLosesWhatTheNetGains) {
 
 TEST(NetCoupling, InAPeriodicBoxTheWaterLosesWhatTheNetGainsOnTheDeviceStep) {
   expect_momentum_kept(StepBackend::HostDevice);
+}
+
+// In the crossings layout the bar runs through the bottom knots and is sampled only between
+// them: it is wet and takes drag there too.
+TEST(NetCoupling, InAPeriodicBoxTheWaterLosesWhatTheNetGainsInTheCrossingsLayout) {
+  expect_momentum_kept(StepBackend::Cpu, "crossings");
 }
 
 }  // namespace
