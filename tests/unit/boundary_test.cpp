@@ -420,10 +420,10 @@ TEST(OpenBoundary, InletKeepsItsBufferFilledOverManySteps) {
   EXPECT_EQ(p.count(ParticleKind::Fluid), 50u);
 }
 
-TEST(OpenBoundary, OutletParticleOnThePeriodicFaceIsRemovedNotWrapped) {
-  // Domain [0, 0.5] in x, periodic, an outlet 0.04 wide at xmax: its interface 0.5 - 0.04
-  // rounds so that a particle exactly on the face is 0.04 - 2e-17 deep, inside the buffer by
-  // depth, while the periodic wrap (which compares with the face) would carry it to x = 0.
+TEST(OpenBoundary, BufferParticlesStayInTheHalfOpenRangeThePeriodicWrapKeeps) {
+  // Domain [0, 0.5] in x, periodic: the wrap keeps x in [0, 0.5) and carries x = 0.5 to 0.
+  // A buffer 0.04 wide at xmax: its interface 0.5 - 0.04 rounds so that a particle exactly on
+  // the face is 0.04 - 2e-17 deep, inside the buffer by depth.
   OpenBoundaryZone out = outlet_xmax();
   out.face = 0.5;
   out.width = 0.04;
@@ -431,22 +431,41 @@ TEST(OpenBoundary, OutletParticleOnThePeriodicFaceIsRemovedNotWrapped) {
   const Vec3d on_face{0.5, 0, 0.1};
   ASSERT_LT(out.depth(on_face), out.width);
   ASSERT_EQ(wrapped_into_period(on_face.x, 0.0, 0.5), 0.0);
-  // An inlet on the same face (flow towards -x) keeps a particle there: one created a width
-  // behind a particle that only just entered the fluid can land on the face.
+  // On the max face a particle has left, outlet or inlet (flow towards -x): wrapped, it
+  // would turn into fluid at x = 0. On the min face, x = 0 is inside.
   OpenBoundaryZone in = out;
   in.inlet = true;
   in.surface_z = 1;
-  const std::vector<OpenBoundaryZone> zones = {out, in};
+  OpenBoundaryZone low = outlet_xmax();
+  low.inward = 1, low.face = 0, low.width = 0.04, low.plane = 0.04;
+  const std::vector<OpenBoundaryZone> zones = {out, in, low};
   ParticleSet p;
   p.add(on_face, {0.4f, 0, 0}, 1000, ParticleKind::Buffer, 0);
   p.add({0.49, 0, 0.1}, {0.4f, 0, 0}, 1000, ParticleKind::Buffer, 0);  // inside: stays
   p.add(on_face, {-0.4f, 0, 0}, 1000, ParticleKind::Buffer, 1);
+  p.add({0.0, 0, 0.1}, {-0.4f, 0, 0}, 1000, ParticleKind::Buffer, 2);  // on the min face: stays
   const OpenBoundaryCounts c = update_open_boundary_particles(p, zones);
-  EXPECT_EQ(c.removed, 1u);
+  EXPECT_EQ(c.removed, 2u);
   EXPECT_TRUE(std::isnan(p.pos[0].x));
   EXPECT_EQ(p.pos[1].x, 0.49);
-  EXPECT_EQ(p.pos[2].x, 0.5);
-  EXPECT_EQ(p.kind[2], ParticleKind::Buffer);
+  EXPECT_TRUE(std::isnan(p.pos[2].x));
+  EXPECT_EQ(p.pos[3].x, 0.0);
+  // A particle created one width behind one that only just entered the fluid lands inside
+  // the range, however the subtraction rounds: below 0.5 at the max face, at or above 0 at
+  // the min face.
+  OpenBoundaryZone in_low = low;
+  in_low.inlet = true;
+  for (double x = out.plane, k = 0; k < 64; ++k) {
+    x = std::nextafter(x, -1.0);  // just across the max face's interface, into the fluid
+    EXPECT_LT(created_buffer_position(in.geometry(), {x, 0, 0.1}).x, 0.5) << k;
+  }
+  for (double x = in_low.plane, k = 0; k < 64; ++k) {
+    x = std::nextafter(x, 1.0);
+    EXPECT_GE(created_buffer_position(in_low.geometry(), {x, 0, 0.1}).x, 0.0) << k;
+  }
+  // Put on the face (0.46 + 0.04 rounds to 0.5), it is moved just inside.
+  ASSERT_EQ(0.46 + 0.04, 0.5);
+  EXPECT_EQ(created_buffer_position(in.geometry(), {0.46, 0, 0.1}).x, std::nextafter(0.5, 0.0));
 }
 
 // ---------------------------------------------------------------------------------------------

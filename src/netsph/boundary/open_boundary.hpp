@@ -13,6 +13,7 @@
 // a profile over z), extrapolated velocity at outlets unless imposed; density hydrostatic or
 // extrapolated from the ghost node mirrored across the interface (sph/ghost_interpolation.hpp).
 // Within the step buffer particles move with that velocity and keep their state.
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -72,7 +73,9 @@ struct ZoneGeometry {
   int axis = 0;
   double inward = 1, plane = 0, width = 0;
   double surface_z = 0;
-  double face = 0;  ///< the domain's face on axis: plane - inward * width up to round-off
+  /// the domain's face on axis: plane - inward * width up to round-off (NaN: not set, only
+  /// the depth rule applies)
+  double face = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// What happens to a particle at the start of a step (the rules above).
@@ -96,14 +99,13 @@ NETSPH_HD BufferTransition buffer_transition(const ZoneGeometry* zones, std::siz
       return z.inlet && p.z <= z.surface_z ? BufferTransition::ToFluidAndCreate
                                            : BufferTransition::ToFluid;
     }
-    // An outlet particle that reached the domain's face has left, also one exactly on it: on
-    // a periodic axis the step start's wrap (which compares with the face itself, not with
-    // plane and width) would otherwise carry it to the far face and into the fluid there. An
-    // inlet keeps one there: a particle created one width behind one that only just crossed
-    // the interface can round onto the face.
-    const bool on_or_beyond_face = (p[z.axis] - z.face) * z.inward <= 0;
-    const bool left = d > z.width || (!z.inlet && on_or_beyond_face);
-    return left ? BufferTransition::Remove : BufferTransition::None;
+    // A particle outside the domain's half-open range [min, max) along the axis has left, as
+    // the step start's periodic wrap sees it (it compares with the faces themselves, not with
+    // plane and width, which round): also one exactly on a max face, which the wrap would
+    // carry to the far face and into the fluid there. created_buffer_position keeps new inlet
+    // particles inside the range.
+    const bool outside = z.inward > 0 ? p[z.axis] < z.face : p[z.axis] >= z.face;
+    return d > z.width || outside ? BufferTransition::Remove : BufferTransition::None;
   }
   if (k == ParticleKind::Fluid) {
     for (std::size_t i = 0; i < nzones; ++i) {
@@ -118,10 +120,13 @@ NETSPH_HD BufferTransition buffer_transition(const ZoneGeometry* zones, std::siz
 }
 
 /// Where an inlet creates the buffer particle that replaces one entering the fluid at p: one
-/// buffer width behind it.
+/// buffer width behind it, inside the domain's half-open range [min, max) along the axis (p
+/// only just across the interface can put it on the face by round-off).
 NETSPH_HD Vec3d created_buffer_position(const ZoneGeometry& z, const Vec3d& p) {
   Vec3d q = p;
   q[z.axis] -= z.inward * z.width;
+  if (z.inward > 0 && q[z.axis] < z.face) q[z.axis] = z.face;
+  if (z.inward < 0 && q[z.axis] >= z.face) q[z.axis] = std::nextafter(z.face, -INFINITY);
   return q;
 }
 
@@ -132,7 +137,7 @@ struct OpenBoundaryZone {
   double inward = 1;  ///< +1: the zone is on the min face (flow into +axis), -1: max face
   double plane = 0;   ///< coordinate of the buffer-fluid interface along axis, m
   double width = 0;   ///< buffer width, m
-  double face = 0;    ///< coordinate of the domain face the buffer lies on, m
+  double face = std::numeric_limits<double>::quiet_NaN();  ///< the domain face the buffer is on, m
   bool velocity_imposed = true;
   double speed = 0;                          ///< m/s, normal speed (into the domain at inlets)
   std::vector<double> profile_z, profile_u;  ///< inlet profile over z, piecewise linear
