@@ -2,8 +2,8 @@
 // takes its drag in every knot-spring sub-step, and the water gets back exactly the momentum
 // the net got from it. A free net (no anchored edge) has only internal twine forces besides
 // its weight and the bar's drag, so its momentum changes by stage_dt (weight + the stage's
-// drag) to round-off; the reaction on the water, spread over the wet sample points, adds up
-// to minus that drag, one kernel support downstream of the bar where the water is.
+// drag) to round-off; the reaction on the water, spread along the bar one kernel support
+// downstream where the water is, adds up to minus that drag.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,7 +26,6 @@ CoupledNet free_net_with_sinker() {
   const std::size_t n = c.model.knots.size();
   c.sinker_flow.assign(n, Vec3d{});
   c.sinker_wet.assign(n, 0);
-  c.sinker_reach.assign(n, SinkerSamples{});
   c.sinker_stage_drag.assign(n, Vec3d{});
   return c;
 }
@@ -47,31 +46,37 @@ TEST(NetStage, TheWaterTakesBackTheMomentumTheSinkerDragGaveTheNet) {
   }
   // The water at 0.3 m/s, rising at 0.5 m/s per metre along the bar (so each share's drag
   // points its own way), its density 1000 + 1000 x kg/m^3 (so each mass weight tells where it
-  // was sampled), coverage 0.9 at the bar and 0.95 downstream. The first sample point is dry
-  // (coverage below 1/2): it takes no reaction. The reaction goes 3 cm downstream, except for
-  // the second point, whose downstream point is dry: its part stays at the bar.
+  // was sampled), coverage 0.9 at the bar and 0.95 downstream. The first sample point on the
+  // bar is dry (coverage below 1/2). The reaction goes 3 cm downstream at points at most 2 cm
+  // apart along the share (each half share, 5 cm, in three pieces): the second of them is dry
+  // and takes no part; the third share has no water downstream at all, and its reaction stays
+  // at its sample points on the bar.
   c.reaction_offset = 0.03;
+  c.reaction_spacing = 0.02;
   const auto flow = [](const Vec3d& x) { return Vec3d{0.3, 0, 0.5 * x.y}; };
   const auto density = [](const Vec3d& x) { return 1000 + 1000 * x.x; };
-  int sampled = 0, calls = 0;
+  int calls = 0;
+  std::vector<int> sampled;
   const FluidSampler sampler = [&](std::span<const Vec3d> points, std::span<ShepardValue> v) {
     ++calls;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      v[i].coverage = calls == 1 ? (i == 0 ? 0.3 : 0.9) : (i == 1 ? 0.2 : 0.95);
+      v[i].coverage = calls == 1 ? (i == 0 ? 0.3 : 0.9) : (i == 1 || i >= 12 ? 0.2 : 0.95);
       v[i].velocity = flow(points[i]);
       v[i].density = density(points[i]);
     }
-    sampled = static_cast<int>(points.size());
+    sampled.push_back(static_cast<int>(points.size()));
   };
   sample_sinker_flows(nets, bodies, sampler);
-  ASSERT_EQ(calls, 2);    // the bar, then downstream
-  ASSERT_EQ(sampled, 9);  // three bottom knots, three points each (inset layout)
-  int share = 0, moved = 0;
+  ASSERT_EQ(calls, 2);  // the bar, then downstream
+  // Three bottom knots: three points each on the bar (inset layout), six downstream.
+  ASSERT_EQ(sampled, (std::vector<int>{9, 18}));
+  int share = 0;
+  std::size_t next = 0;  // in c.sinker_reach
   for (std::size_t k = 0; k < n; ++k) {
     const NetKnot& knot = net.knots[k];
     if (knot.sinker_length <= 0) continue;
     SinkerSamples bar;
-    ASSERT_EQ(sinker_sample_points(net, knot, bar), 3);
+    ASSERT_EQ(sinker_sample_points(net, knot, bar), 3);  // here, the end at -y, the end at +y
     // The share's flow: the weighted mean over its wet points; the drag's direction from it.
     Vec3d mean{};
     double wet = 0;
@@ -85,24 +90,40 @@ TEST(NetStage, TheWaterTakesBackTheMomentumTheSinkerDragGaveTheNet) {
     Vec3d u = mean - bodies[k].state.vel;
     u = u - net.across * dot(u, net.across);
     const Vec3d along = u / norm(u);
-    const SinkerSamples& reach = c.sinker_reach[k];
-    ASSERT_EQ(reach.count, 3);
-    for (int i = 0; i < 3; ++i) {
-      const int global = 3 * share + i;
-      if (global == 0) {
-        EXPECT_EQ(reach.weights[i], 0.0);  // dry
-        continue;
+    if (share == 2) {
+      // No water downstream: at the bar's sample points, by their weights.
+      for (int i = 0; i < 3; ++i, ++next) {
+        ASSERT_LT(next, c.sinker_reach.size());
+        const CoupledNet::ReactionPoint& r = c.sinker_reach[next];
+        EXPECT_EQ(r.knot, k);
+        EXPECT_NEAR(norm(r.point - bar.points[i]), 0, 1e-15) << i;
+        EXPECT_NEAR(r.part_per_mass_weight, bar.weights[i] / (0.9 * density(bar.points[i])), 1e-15)
+            << i;
       }
-      const bool stays = global == 1;  // its downstream point is dry
-      const Vec3d expected = stays ? bar.points[i] : bar.points[i] + along * 0.03;
-      EXPECT_NEAR(norm(reach.points[i] - expected), 0, 1e-12) << k << " " << i;
-      const double mass_weight = (stays ? 0.9 : 0.95) * density(expected);
-      EXPECT_NEAR(reach.weights[i], bar.weights[i] / wet / mass_weight, 1e-15) << k << " " << i;
-      moved += !stays;
+    } else {
+      // end -> here -> end in three pieces each, their middles moved downstream; the second
+      // point of the first share is dry.
+      const Vec3d line[3] = {bar.points[1], bar.points[0], bar.points[2]};
+      const double piece = 0.05 / 3, wet_length = share == 0 ? 5 * piece : 6 * piece;
+      for (int seg = 0; seg < 2; ++seg) {
+        for (int p = 0; p < 3; ++p) {
+          if (share == 0 && seg == 0 && p == 1) continue;
+          ASSERT_LT(next, c.sinker_reach.size());
+          const CoupledNet::ReactionPoint& r = c.sinker_reach[next++];
+          const Vec3d expected =
+              line[seg] + (line[seg + 1] - line[seg]) * ((p + 0.5) / 3) + along * 0.03;
+          EXPECT_EQ(r.knot, k);
+          EXPECT_NEAR(norm(r.point - expected), 0, 1e-12) << k << " " << seg << " " << p;
+          EXPECT_NEAR(r.part_per_mass_weight, piece / wet_length / (0.95 * density(expected)),
+                      1e-12)
+              << k << " " << seg << " " << p;
+        }
+      }
     }
     ++share;
   }
-  EXPECT_EQ(moved, 7);
+  EXPECT_EQ(next, c.sinker_reach.size());
+  EXPECT_EQ(next, 5u + 6u + 3u);
 
   const double stage_dt = 2e-3;
   advance_coupled_nets(nets, bodies, stage_dt);
@@ -125,10 +146,10 @@ TEST(NetStage, TheWaterTakesBackTheMomentumTheSinkerDragGaveTheNet) {
   // weight there (coverage x density) is each point's force.
   std::vector<FluidPointLoad> loads;
   add_sinker_reactions(nets, loads);
-  ASSERT_EQ(static_cast<int>(loads.size()), sampled - 1);
+  ASSERT_EQ(loads.size(), c.sinker_reach.size());
   Vec3d given{};
   for (std::size_t l = 0; l < loads.size(); ++l)
-    given += loads[l].per_weight * ((l == 0 ? 0.9 : 0.95) * density(loads[l].point));
+    given += loads[l].per_weight * ((l < 11 ? 0.95 : 0.9) * density(loads[l].point));
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(given[a], -drag[a], 1e-12) << a;
 }
 

@@ -1,5 +1,9 @@
 #include "netsph/solver/net_coupling.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "netsph/net/current_loads.hpp"
@@ -72,7 +76,6 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
         kSinkerReactionOffsetSupports * 2 * expanded.simulation.h_over_dp * expanded.simulation.dp;
     c.sinker_flow.assign(c.model.knots.size(), Vec3d{});
     c.sinker_wet.assign(c.model.knots.size(), 0);
-    c.sinker_reach.assign(c.model.knots.size(), SinkerSamples{});
     c.sinker_stage_drag.assign(c.model.knots.size(), Vec3d{});
     nets.push_back(std::move(c));
   }
@@ -83,6 +86,96 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
   }
   return nets;
 }
+
+namespace {
+
+/// CoupledNet::sinker_reach from the shares' flows: points along each wet share, moved
+/// downstream, sampled for the fluid's mass weight there. A share with no water downstream
+/// gives its reaction at its wet sample points on the bar instead (`at_bar`).
+void place_sinker_reactions(
+    std::vector<CoupledNet>& nets, const FluidSampler& sample,
+    const std::vector<std::pair<CoupledNet*, CoupledNet::ReactionPoint>>& at_bar) {
+  // Each wet share's line along the bar (end, the bar at the knot, end: the ends are
+  // sinker_sample_points'), cut into pieces at most reaction_spacing long, a point at each
+  // piece's middle weighted by its length, moved downstream along the share's drag.
+  struct Candidate {
+    CoupledNet* net;
+    std::size_t knot;
+    Vec3d point;
+    double length;
+  };
+  std::vector<Candidate> candidates;
+  for (CoupledNet& c : nets) {
+    c.sinker_reach.clear();
+    const NetModel& net = c.model;
+    for (std::size_t k = 0; k < net.knots.size(); ++k) {
+      const NetKnot& knot = net.knots[k];
+      if (knot.sinker_length <= 0 || !c.sinker_wet[k]) continue;
+      // Only the drag's direction matters here (hence unit density).
+      const Vec3d drag = sinker_drag(net, knot, c.sinker_flow[k], 1.0);
+      if (!(norm(drag) > 0)) {  // no direction now (the sub-steps may still give it drag)
+        for (const auto& [owner, r] : at_bar)
+          if (owner == &c && r.knot == k) c.sinker_reach.push_back(r);
+        continue;
+      }
+      const Vec3d downstream = drag * (c.reaction_offset / norm(drag));
+      SinkerSamples samples;
+      sinker_sample_points(net, knot, samples);
+      const Vec3d here = sinker_point(net, knot);
+      Vec3d line[3];
+      int n = 0;
+      line[n++] = here;
+      for (int i = 0; i < samples.count; ++i) {
+        if (norm(samples.points[i] - here) > 0) line[n++] = samples.points[i];
+      }
+      if (n == 3) std::swap(line[0], line[1]);  // end -> here -> end
+      for (int seg = 0; seg + 1 < n; ++seg) {
+        const Vec3d a = line[seg], b = line[seg + 1];
+        const double length = norm(b - a);
+        const int pieces =
+            c.reaction_spacing > 0
+                ? std::max(1, static_cast<int>(std::ceil(length / c.reaction_spacing)))
+                : 1;
+        for (int piece = 0; piece < pieces; ++piece) {
+          candidates.push_back(
+              {&c, k, a + (b - a) * ((piece + 0.5) / pieces) + downstream, length / pieces});
+        }
+      }
+    }
+  }
+  if (candidates.empty()) return;
+  // The fluid's mass weight sum_j m_j W at each point (sum V W rho, sph/shepard.hpp); points
+  // out of the water take no part, the share's wet points share its reaction by length.
+  std::vector<Vec3d> points;
+  points.reserve(candidates.size());
+  for (const Candidate& cand : candidates) points.push_back(cand.point);
+  std::vector<ShepardValue> there(points.size());
+  sample(points, there);
+  for (std::size_t first = 0; first < candidates.size();) {
+    std::size_t end = first;
+    double wet = 0;
+    for (; end < candidates.size() && candidates[end].net == candidates[first].net &&
+           candidates[end].knot == candidates[first].knot;
+         ++end) {
+      if (there[end].coverage >= kSinkerWetCoverage) wet += candidates[end].length;
+    }
+    CoupledNet& c = *candidates[first].net;
+    const std::size_t knot = candidates[first].knot;
+    for (std::size_t i = first; i < end && wet > 0; ++i) {
+      if (there[i].coverage < kSinkerWetCoverage) continue;
+      const double mass_weight = there[i].coverage * there[i].density;
+      c.sinker_reach.push_back(
+          {knot, candidates[i].point, candidates[i].length / wet / mass_weight});
+    }
+    if (!(wet > 0)) {
+      for (const auto& [owner, r] : at_bar)
+        if (owner == &c && r.knot == knot) c.sinker_reach.push_back(r);
+    }
+    first = end;
+  }
+}
+
+}  // namespace
 
 void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidBody>& bodies,
                          const FluidSampler& sample) {
@@ -109,51 +202,28 @@ void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidB
   if (points.empty()) return;
   std::vector<ShepardValue> values(points.size());
   sample(points, values);
-  // Each share's flow: the weighted mean over its points in the water. Its reaction goes to
-  // the water by the same weights, each wet point's part moved downstream along the share's
-  // drag by CoupledNet::reaction_offset (below).
-  std::vector<Vec3d> downstream(points.size());
+  // Each share's flow: the weighted mean over its points in the water; those points with
+  // their weights and mass weights are where its reaction goes if none goes downstream.
+  std::vector<std::pair<CoupledNet*, CoupledNet::ReactionPoint>> at_bar;
   const ShepardValue* v = values.data();
-  Vec3d* moved = downstream.data();
   for (const Share& s : shares) {
     Vec3d sum{};
     double weight = 0;
-    for (int i = 0; i < s.samples.count; ++i) {
-      if (v[i].coverage < kSinkerWetCoverage) continue;
-      sum += v[i].velocity * s.samples.weights[i];
+    const std::size_t first = at_bar.size();
+    for (int i = 0; i < s.samples.count; ++i, ++v) {
+      if (v->coverage < kSinkerWetCoverage) continue;
+      sum += v->velocity * s.samples.weights[i];
       weight += s.samples.weights[i];
+      at_bar.push_back(
+          {s.net,
+           {s.knot, s.samples.points[i], s.samples.weights[i] / (v->coverage * v->density)}});
     }
-    CoupledNet& c = *s.net;
-    c.sinker_wet[s.knot] = weight > 0;
-    c.sinker_flow[s.knot] = weight > 0 ? sum / weight : Vec3d{};
-    const Vec3d drag = sinker_drag(c.model, c.model.knots[s.knot], c.sinker_flow[s.knot], 1.0);
-    const double size = norm(drag);
-    const Vec3d along = size > 0 ? drag / size : Vec3d{};
-    SinkerSamples& reach = c.sinker_reach[s.knot];
-    reach = s.samples;
-    for (int i = 0; i < s.samples.count; ++i) {
-      const bool wet = v[i].coverage >= kSinkerWetCoverage;
-      reach.weights[i] = wet ? s.samples.weights[i] / weight : 0;
-      moved[i] = s.samples.points[i] + along * c.reaction_offset;
-    }
-    v += s.samples.count;
-    moved += s.samples.count;
+    for (std::size_t i = first; i < at_bar.size(); ++i)
+      at_bar[i].second.part_per_mass_weight /= weight;
+    s.net->sinker_wet[s.knot] = weight > 0;
+    s.net->sinker_flow[s.knot] = weight > 0 ? sum / weight : Vec3d{};
   }
-  // The fluid's mass weight sum_j m_j W where each part goes (sum V W rho, sph/shepard.hpp):
-  // downstream where the water is, else at the sample point itself.
-  std::vector<ShepardValue> there(points.size());
-  sample(downstream, there);
-  std::size_t p = 0;
-  for (const Share& s : shares) {
-    SinkerSamples& reach = s.net->sinker_reach[s.knot];
-    for (int i = 0; i < reach.count; ++i, ++p) {
-      if (reach.weights[i] <= 0) continue;
-      const bool moves = there[p].coverage >= kSinkerWetCoverage;
-      const ShepardValue& at = moves ? there[p] : values[p];
-      if (moves) reach.points[i] = downstream[p];
-      reach.weights[i] /= at.coverage * at.density;
-    }
-  }
+  place_sinker_reactions(nets, sample, at_bar);
 }
 
 void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>& bodies,
@@ -207,13 +277,8 @@ void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>&
 
 void add_sinker_reactions(const std::vector<CoupledNet>& nets, std::vector<FluidPointLoad>& loads) {
   for (const CoupledNet& c : nets) {
-    for (std::size_t k = 0; k < c.sinker_reach.size(); ++k) {
-      const SinkerSamples& reach = c.sinker_reach[k];
-      const Vec3d reaction = -c.sinker_stage_drag[k];
-      for (int i = 0; i < reach.count; ++i) {
-        if (reach.weights[i] > 0) loads.push_back({reach.points[i], reaction * reach.weights[i]});
-      }
-    }
+    for (const CoupledNet::ReactionPoint& r : c.sinker_reach)
+      loads.push_back({r.point, -c.sinker_stage_drag[r.knot] * r.part_per_mass_weight});
   }
 }
 

@@ -16,15 +16,16 @@
 // sinker_sample_points), and the bar takes cylinder drag on the mean of the water's velocity
 // there relative to the knot (sinker_drag), in every sub-step of the knot-spring solver. Its
 // reaction goes back to the water (sph/fluid_point_loads.hpp): the stage's drag as the
-// sub-steps applied it, spread by kernel weight over the fluid one kernel support (2h)
-// downstream of each wet sample point, along the drag, so the water loses the momentum the
-// net gains. Not at the sample points themselves: there it would slow the very water the drag
-// is taken from (the self-induced velocity of two-way coupled point forces, Horwitz & Mani
-// 2016), and the tethered knot's bar took 0.062 N instead of 0.075 N; one support
-// downstream its kernel no longer reaches the sample point (only the edge of the water the
-// sample averages) and the bar takes 0.075 N, as without the reaction. The knot bodies report the
-// drag apart from the resolved fluid force (RigidBody::modelled_force), and the net's force group
-// adds it: a load cell on the net's frame reads both.
+// sub-steps applied it, spread by kernel weight over the fluid along the share at points at
+// most h apart (a line sink, as the bar is, not a few spots, which at fine resolution would
+// stop the water crossing them), moved one kernel support (2h) downstream along the drag, so
+// the water loses the momentum the net gains. Not at the bar itself: there it would slow the very
+// water the drag is taken from (the self-induced velocity of two-way coupled point forces, Horwitz
+// & Mani 2016), and the tethered knot's bar took 0.062 N instead of 0.075 N; one support downstream
+// its kernel no longer reaches the sample point (only the edge of the water the sample averages)
+// and the bar takes 0.075 N, as without the reaction. The knot bodies report the drag apart from
+// the resolved fluid force (RigidBody::modelled_force), and the net's force group adds it: a load
+// cell on the net's frame reads both.
 #include <vector>
 
 #include "netsph/bodies/rigid_body.hpp"
@@ -42,20 +43,27 @@ struct CoupledNet {
   std::vector<Vec3d> initial;   ///< undeformed knot positions
   double water_density = 1000;  ///< kg/m^3, for the sinker's drag
   /// How far downstream of the bar, along its drag, its reaction goes into the water, m
-  /// (kSinkerReactionOffsetSupports kernel supports; 0 in tests without a fluid).
+  /// (kSinkerReactionOffsetSupports kernel supports), and the largest spacing of the points
+  /// along the bar it is spread over (h); 0 in tests without a fluid.
   double reaction_offset = 0;
+  double reaction_spacing = 0;
   /// The water's velocity along each knot's share of the sinker bar at the stage being
   /// advanced, m/s: the weighted mean over its sample points in the water (Shepard coverage
   /// at least 1/2); wet: whether any is (a bar above a free surface takes no drag). Knots
   /// without a share: zero, false.
   std::vector<Vec3d> sinker_flow;
   std::vector<char> sinker_wet;
-  /// Where each knot's share of the bar gives its reaction to the water at this stage: its
-  /// wet sample points moved reaction_offset downstream (or, where the water does not reach
-  /// there, the sample points themselves), each weight turned into the point's part of the
-  /// share (the wet points' weights normalised; 0 at a dry point) over the fluid's mass weight
-  /// there, sum_j m_j W (kg/m^3; the weight in m^3/kg).
-  std::vector<SinkerSamples> sinker_reach;
+  /// A point where a knot's share of the bar gives the water its reaction at this stage.
+  struct ReactionPoint {
+    std::size_t knot = 0;
+    Vec3d point{};  ///< m
+    /// The point's part of the share's reaction (its length along the share over the wet
+    /// parts') over the fluid's mass weight there, sum_j m_j W (kg/m^3): m^3/kg.
+    double part_per_mass_weight = 0;
+  };
+  /// The stage's reaction points of every share: along the bar at most h apart, each moved
+  /// reaction_offset downstream along its share's drag, where the water is.
+  std::vector<ReactionPoint> sinker_reach;
   /// Each knot's sinker drag over the stage as the knot-spring sub-steps applied it (their
   /// trapezoidal mean), N: what the water takes back.
   std::vector<Vec3d> sinker_stage_drag;

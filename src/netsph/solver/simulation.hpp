@@ -6,9 +6,11 @@
 //            wrap periodic axes; sort by cell (drops particles that left the domain)
 //            open-boundary buffer state (imposed / extrapolated); mDBC wall state
 //            view of state n  -> rates a^n, drho^n (+ body contacts)  -> dt (CFL)
-//            save state n     -> body forces -> predictor (half step), bodies included
+//            save state n     -> body forces -> bodies' stage -> water loads (sinker bars'
+//                                reaction) -> predictor (half step), bodies included
 //            [re-sort if the half step moved a particle past the grid skin]
-//            view of half step -> rates (+ shifting sums) -> body forces -> corrector
+//            view of half step -> rates (+ shifting sums) -> body forces -> bodies' stage ->
+//                                water loads -> corrector
 //            checks: non-finite state, dt below the floor
 //
 // run() adds the outputs (snapshots, series.csv, summary.json) and the progress display.
