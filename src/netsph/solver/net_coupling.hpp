@@ -97,8 +97,8 @@ inline constexpr double kSinkerWetCoverage = 0.5;
 void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>& bodies,
                           double stage_dt);
 
-/// Appends the reaction of every sinker's stage drag on the water, at the points where the
-/// stage sampled it (after advance_coupled_nets).
+/// Appends the reaction of every sinker's stage drag on the water, at the stage's reaction
+/// points (CoupledNet::sinker_reach; after advance_coupled_nets).
 void add_sinker_reactions(const std::vector<CoupledNet>& nets, std::vector<FluidPointLoad>& loads);
 
 }  // namespace netsph

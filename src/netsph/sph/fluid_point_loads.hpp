@@ -11,7 +11,8 @@
 // DEM-SPH unresolved coupling of Robinson, Ramaioli & Luding 2014). The CPU step and the
 // device step both add it per particle through point_loads_acceleration, one gather over the
 // loads in their order, so the sum does not depend on the thread count. Each particle in the
-// loads' box loops over all loads: meant for a few dozen (a net's sinker bar), not thousands.
+// loads' box loops over all loads: meant for a net's sinker bar (tens to a few hundred points
+// h apart), not for thousands over a whole cage, which would want the loads binned by cell.
 // The loads are added after the time step is chosen, so they do not enter its force limit:
 // under 1 m/s^2 for the reduced Bi 2014 net's bar; they grow as 1/h^2, but at the paper's
 // dp = 1.2 mm the limit they would set is still about 1e-3 s against the acoustic 1.2e-4 s.
