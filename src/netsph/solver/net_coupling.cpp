@@ -89,57 +89,58 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
 
 namespace {
 
+/// One knot's share of a sinker bar at the stage being sampled.
+struct SinkerShare {
+  CoupledNet* net;
+  std::size_t knot;
+  SinkerSamples samples;
+  /// Where its reaction goes if none goes downstream: its wet sample points on the bar.
+  std::vector<CoupledNet::ReactionPoint> at_bar;
+};
+
 /// CoupledNet::sinker_reach from the shares' flows: points along each wet share, moved
-/// downstream, sampled for the fluid's mass weight there. A share with no water downstream
-/// gives its reaction at its wet sample points on the bar instead (`at_bar`).
-void place_sinker_reactions(
-    std::vector<CoupledNet>& nets, const FluidSampler& sample,
-    const std::vector<std::pair<CoupledNet*, CoupledNet::ReactionPoint>>& at_bar) {
-  // Each wet share's line along the bar (end, the bar at the knot, end: the ends are
-  // sinker_sample_points'), cut into pieces at most reaction_spacing long, a point at each
-  // piece's middle weighted by its length, moved downstream along the share's drag.
+/// downstream, sampled for the fluid's mass weight there; a share with no water downstream
+/// (or no drag direction yet: the sub-steps may still give it drag) gives its reaction at
+/// its wet sample points on the bar instead.
+void place_sinker_reactions(const std::vector<SinkerShare>& shares, const FluidSampler& sample) {
+  // Each wet share's line along the bar (end, the bar at the knot, end: the ends are its
+  // sample points'), cut into pieces at most reaction_spacing long, a point at each piece's
+  // middle weighted by its length, moved downstream along the share's drag.
   struct Candidate {
-    CoupledNet* net;
-    std::size_t knot;
+    const SinkerShare* share;
     Vec3d point;
     double length;
   };
   std::vector<Candidate> candidates;
-  for (CoupledNet& c : nets) {
-    c.sinker_reach.clear();
+  for (const SinkerShare& s : shares) {
+    CoupledNet& c = *s.net;
     const NetModel& net = c.model;
-    for (std::size_t k = 0; k < net.knots.size(); ++k) {
-      const NetKnot& knot = net.knots[k];
-      if (knot.sinker_length <= 0 || !c.sinker_wet[k]) continue;
-      // Only the drag's direction matters here (hence unit density).
-      const Vec3d drag = sinker_drag(net, knot, c.sinker_flow[k], 1.0);
-      if (!(norm(drag) > 0)) {  // no direction now (the sub-steps may still give it drag)
-        for (const auto& [owner, r] : at_bar)
-          if (owner == &c && r.knot == k) c.sinker_reach.push_back(r);
-        continue;
-      }
-      const Vec3d downstream = drag * (c.reaction_offset / norm(drag));
-      SinkerSamples samples;
-      sinker_sample_points(net, knot, samples);
-      const Vec3d here = sinker_point(net, knot);
-      Vec3d line[3];
-      int n = 0;
-      line[n++] = here;
-      for (int i = 0; i < samples.count; ++i) {
-        if (norm(samples.points[i] - here) > 0) line[n++] = samples.points[i];
-      }
-      if (n == 3) std::swap(line[0], line[1]);  // end -> here -> end
-      for (int seg = 0; seg + 1 < n; ++seg) {
-        const Vec3d a = line[seg], b = line[seg + 1];
-        const double length = norm(b - a);
-        const int pieces =
-            c.reaction_spacing > 0
-                ? std::max(1, static_cast<int>(std::ceil(length / c.reaction_spacing)))
-                : 1;
-        for (int piece = 0; piece < pieces; ++piece) {
-          candidates.push_back(
-              {&c, k, a + (b - a) * ((piece + 0.5) / pieces) + downstream, length / pieces});
-        }
+    const NetKnot& knot = net.knots[s.knot];
+    if (!c.sinker_wet[s.knot]) continue;
+    // Only the drag's direction matters here (hence unit density).
+    const Vec3d drag = sinker_drag(net, knot, c.sinker_flow[s.knot], 1.0);
+    if (!(norm(drag) > 0)) {
+      c.sinker_reach.insert(c.sinker_reach.end(), s.at_bar.begin(), s.at_bar.end());
+      continue;
+    }
+    const Vec3d downstream = drag * (c.reaction_offset / norm(drag));
+    const Vec3d here = sinker_point(net, knot);
+    Vec3d line[3];
+    int n = 0;
+    line[n++] = here;
+    for (int i = 0; i < s.samples.count; ++i) {
+      if (norm(s.samples.points[i] - here) > 0) line[n++] = s.samples.points[i];
+    }
+    if (n == 3) std::swap(line[0], line[1]);  // end -> here -> end
+    for (int seg = 0; seg + 1 < n; ++seg) {
+      const Vec3d a = line[seg], b = line[seg + 1];
+      const double length = norm(b - a);
+      const int pieces = c.reaction_spacing > 0
+                             ? std::max(1, static_cast<int>(std::ceil(length / c.reaction_spacing)))
+                             : 1;
+      for (int piece = 0; piece < pieces; ++piece) {
+        candidates.push_back(
+            {&s, a + (b - a) * ((piece + 0.5) / pieces) + downstream, length / pieces});
       }
     }
   }
@@ -152,24 +153,18 @@ void place_sinker_reactions(
   std::vector<ShepardValue> there(points.size());
   sample(points, there);
   for (std::size_t first = 0; first < candidates.size();) {
+    const SinkerShare& s = *candidates[first].share;
     std::size_t end = first;
     double wet = 0;
-    for (; end < candidates.size() && candidates[end].net == candidates[first].net &&
-           candidates[end].knot == candidates[first].knot;
-         ++end) {
+    for (; end < candidates.size() && candidates[end].share == &s; ++end) {
       if (there[end].coverage >= kSinkerWetCoverage) wet += candidates[end].length;
     }
-    CoupledNet& c = *candidates[first].net;
-    const std::size_t knot = candidates[first].knot;
+    std::vector<CoupledNet::ReactionPoint>& reach = s.net->sinker_reach;
+    if (!(wet > 0)) reach.insert(reach.end(), s.at_bar.begin(), s.at_bar.end());
     for (std::size_t i = first; i < end && wet > 0; ++i) {
       if (there[i].coverage < kSinkerWetCoverage) continue;
       const double mass_weight = there[i].coverage * there[i].density;
-      c.sinker_reach.push_back(
-          {knot, candidates[i].point, candidates[i].length / wet / mass_weight});
-    }
-    if (!(wet > 0)) {
-      for (const auto& [owner, r] : at_bar)
-        if (owner == &c && r.knot == knot) c.sinker_reach.push_back(r);
+      reach.push_back({s.knot, candidates[i].point, candidates[i].length / wet / mass_weight});
     }
     first = end;
   }
@@ -179,14 +174,10 @@ void place_sinker_reactions(
 
 void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidBody>& bodies,
                          const FluidSampler& sample) {
-  struct Share {
-    CoupledNet* net;
-    std::size_t knot;
-    SinkerSamples samples;
-  };
-  std::vector<Share> shares;
+  std::vector<SinkerShare> shares;
   std::vector<Vec3d> points;
   for (CoupledNet& c : nets) {
+    c.sinker_reach.clear();
     NetModel& net = c.model;
     for (std::size_t k = 0; k < net.knots.size(); ++k) {
       net.knots[k].position = bodies[c.first_body + k].state.com;
@@ -194,7 +185,7 @@ void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidB
     }
     for (std::size_t k = 0; k < net.knots.size(); ++k) {
       if (net.knots[k].sinker_length <= 0) continue;
-      Share& s = shares.emplace_back(Share{&c, k, {}});
+      SinkerShare& s = shares.emplace_back(SinkerShare{&c, k, {}, {}});
       sinker_sample_points(net, net.knots[k], s.samples);
       points.insert(points.end(), s.samples.points, s.samples.points + s.samples.count);
     }
@@ -202,28 +193,24 @@ void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidB
   if (points.empty()) return;
   std::vector<ShepardValue> values(points.size());
   sample(points, values);
-  // Each share's flow: the weighted mean over its points in the water; those points with
-  // their weights and mass weights are where its reaction goes if none goes downstream.
-  std::vector<std::pair<CoupledNet*, CoupledNet::ReactionPoint>> at_bar;
+  // Each share's flow: the weighted mean over its points in the water; those points, by their
+  // weights over the mass weights there, are where its reaction goes if none goes downstream.
   const ShepardValue* v = values.data();
-  for (const Share& s : shares) {
+  for (SinkerShare& s : shares) {
     Vec3d sum{};
     double weight = 0;
-    const std::size_t first = at_bar.size();
     for (int i = 0; i < s.samples.count; ++i, ++v) {
       if (v->coverage < kSinkerWetCoverage) continue;
       sum += v->velocity * s.samples.weights[i];
       weight += s.samples.weights[i];
-      at_bar.push_back(
-          {s.net,
-           {s.knot, s.samples.points[i], s.samples.weights[i] / (v->coverage * v->density)}});
+      s.at_bar.push_back(
+          {s.knot, s.samples.points[i], s.samples.weights[i] / (v->coverage * v->density)});
     }
-    for (std::size_t i = first; i < at_bar.size(); ++i)
-      at_bar[i].second.part_per_mass_weight /= weight;
+    for (CoupledNet::ReactionPoint& r : s.at_bar) r.part_per_mass_weight /= weight;
     s.net->sinker_wet[s.knot] = weight > 0;
     s.net->sinker_flow[s.knot] = weight > 0 ? sum / weight : Vec3d{};
   }
-  place_sinker_reactions(nets, sample, at_bar);
+  place_sinker_reactions(shares, sample);
 }
 
 void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>& bodies,
