@@ -5,6 +5,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "netsph/net/current_loads.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
@@ -160,7 +161,16 @@ void place_sinker_reactions(const std::vector<SinkerShare>& shares, const FluidS
       if (there[end].coverage >= kSinkerWetCoverage) wet += candidates[end].length;
     }
     std::vector<CoupledNet::ReactionPoint>& reach = s.net->sinker_reach;
-    if (!(wet > 0)) reach.insert(reach.end(), s.at_bar.begin(), s.at_bar.end());
+    if (!(wet > 0)) {
+      reach.insert(reach.end(), s.at_bar.begin(), s.at_bar.end());
+      if (s.net->reactions_at_bar++ == 0) {
+        spdlog::warn(
+            "net '{}': no water {:.3g} m downstream of knot {}'s share of the sinker bar; its "
+            "reaction goes into the water at the bar, where it slows the flow the bar's drag is "
+            "sampled from (counted in summary.json, nets[].sinker_reactions_at_bar)",
+            s.net->model.name, s.net->reaction_offset, s.knot);
+      }
+    }
     for (std::size_t i = first; i < end && wet > 0; ++i) {
       if (there[i].coverage < kSinkerWetCoverage) continue;
       const double mass_weight = there[i].coverage * there[i].density;
@@ -248,11 +258,14 @@ void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>&
     for (std::size_t k = 0; k < nk; ++k) {
       c.sinker_stage_drag[k] =
           calls >= 2 ? (drag_sum[k] - (drag_first[k] + drag_last[k]) * 0.5) / double(calls - 1)
-                     : Vec3d{};
+                     : drag_last[k];
     }
     for (std::size_t k = 0; k < nk; ++k) {
       RigidBody& b = bodies[c.first_body + k];
-      b.modelled_force = sinker(net, k);
+      // The drag the stage applied, as the water takes it back: after the corrector (a stage
+      // over the whole step) the step's mean, so that the net's force columns integrate to
+      // the momentum the bar gave the net and took from the water.
+      b.modelled_force = c.sinker_stage_drag[k];
       b.modelled_torque =
           cross(sinker_point(net, net.knots[k]) - net.knots[k].position, b.modelled_force);
       if (b.motion != BodyMotion::Floating) continue;

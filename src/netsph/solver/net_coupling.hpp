@@ -67,6 +67,10 @@ struct CoupledNet {
   /// Each knot's sinker drag over the stage as the knot-spring sub-steps applied it (their
   /// trapezoidal mean), N: what the water takes back.
   std::vector<Vec3d> sinker_stage_drag;
+  /// How many times (shares x stages) a share of the bar found no water reaction_offset
+  /// downstream and gave its reaction at the bar, where it slows the water the drag is taken
+  /// from (the first time is logged as a warning; summary.json reports the count).
+  std::size_t reactions_at_bar = 0;
 };
 
 /// The case with one [[body]] appended per knot of every [[net]] (after the case's own
@@ -91,9 +95,10 @@ inline constexpr double kSinkerWetCoverage = 0.5;
 
 /// One stage for every net: knot positions and velocities from the bodies' step-start state,
 /// advanced by `stage_dt` under each knot body's fluid and contact force and its sinker's
-/// drag (at the sampled flow), written back to the bodies' state; the sinker's drag at the
-/// stage's end goes to the knot bodies' modelled_force and modelled_torque, its mean over the
-/// stage to CoupledNet::sinker_stage_drag.
+/// drag (at the sampled flow), written back to the bodies' state; the sinker's drag as the
+/// sub-steps applied it (their trapezoidal mean over the stage) goes to
+/// CoupledNet::sinker_stage_drag and the knot bodies' modelled_force (its moment about the
+/// knot's centre at the stage's end to modelled_torque).
 void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>& bodies,
                           double stage_dt);
 

@@ -73,6 +73,9 @@ nlohmann::json NetRecorder::summary(const Simulation& sim) const {
         j["mean_sinker_drag_N"] = {f.x, f.y, f.z};
       }
     }
+    // Shares x stages whose reaction found no water downstream (since the run's start or
+    // restart): a bar at the outlet or above a free surface.
+    if (m.sinker_diameter > 0) j["sinker_reactions_at_bar"] = net.reactions_at_bar;
     j["final_max_deflection_m"] = max_normal_deflection(m, net.initial);
     // The bottom knot of the middle column: how far the net's lower edge has swung.
     const int column = m.columns / 2;
