@@ -118,6 +118,17 @@ void reject_foreign_parameter(const TomlTableReader& r, std::string_view key,
   }
 }
 
+void check_increasing(const TomlTableReader& r, std::string_view key, const toml::node& node,
+                      const std::vector<double>& values) {
+  for (std::size_t k = 1; k < values.size(); ++k) {
+    if (values[k] > values[k - 1]) continue;
+    r.fail_value(key, node,
+                 fmt::format("must be strictly increasing, but element {} = {} <= element {} = {}",
+                             k + 1, format_number(values[k]), k, format_number(values[k - 1])),
+                 node.as_array()->get(k));
+  }
+}
+
 std::string format_derived(double v) {
   return fmt::format("{:.6g}", v);
 }

@@ -153,18 +153,6 @@ Quat align_x_to(const Vec3d& d) {
   return Quat{w / n, 0, -d.z / n, d.y / n};
 }
 
-/// `values` (read from the array `node`) must be strictly increasing.
-void check_increasing(const TomlTableReader& r, std::string_view key, const toml::node& node,
-                      const std::vector<double>& values) {
-  for (std::size_t k = 1; k < values.size(); ++k) {
-    if (values[k] > values[k - 1]) continue;
-    r.fail_value(key, node,
-                 fmt::format("must be strictly increasing, but element {} = {} <= element {} = {}",
-                             k + 1, format_number(values[k]), k, format_number(values[k - 1])),
-                 node.as_array()->get(k));
-  }
-}
-
 }  // namespace
 
 // ---- [[body]] -----------------------------------------------------------------------------

@@ -35,6 +35,11 @@ void reject_foreign_parameter(const TomlTableReader& r, std::string_view key,
                               std::string_view model, std::string_view owners,
                               std::string_view own_keys);
 
+/// `values` (read from the array `node` under `key`) must be strictly increasing: a
+/// time or height table.
+void check_increasing(const TomlTableReader& r, std::string_view key, const toml::node& node,
+                      const std::vector<double>& values);
+
 /// Quantities derived from several keys (2h, layers * dp): rounded, so that 0.06 is not
 /// printed as 0.060000000000000005.
 std::string format_derived(double v);
