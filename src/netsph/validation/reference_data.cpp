@@ -51,9 +51,9 @@ const std::vector<StatedFigure>& stated_figures() {
        "121 knots of 42.89 mm over the 1 x 1 m outline"},
       // 3.3: the flexible net of Bi et al. (2014).
       {"bi_reduction_low", 0.10, "", "Shi et al. 2024, 3.3.2 (Figure 19)",
-       "velocity reduction behind the net, lower end"},
+       "velocity reduction behind the net on the centreline, lower end"},
       {"bi_reduction_high", 0.15, "", "Shi et al. 2024, 3.3.2 (Figure 19)",
-       "velocity reduction behind the net, upper end"},
+       "velocity reduction behind the net on the centreline, upper end"},
       {"bi_numerical_solidity", 0.258, "", "Shi et al. 2024, 3.3.1",
        "225 knots of 10.19 mm over the 0.3 x 0.3 m outline"},
       // 3.4: two flexible nets 0.3 m apart.

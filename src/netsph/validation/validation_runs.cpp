@@ -259,15 +259,23 @@ std::vector<ValidationRow> bi_reduced(const ValidationContext& ctx) {
                        ref.shi_sph, ref.experiment, note + "; 'paper' = Shi et al.'s SPH"));
     rows.push_back(row("bi2014_reduced", fmt::format("drag at {} m/s vs Bi's model", ref.velocity),
                        "N", drag, ref.bi_model, {}, "'paper' = Bi et al.'s lumped-mass model"));
-    const double reduction =
-        named(s, "probes", "wake_section").at("mean_velocity_reduction").get<double>();
+    // The paper's 10-15% is read off its Figure 19, the velocity along the centreline through
+    // the net: the point probe 'wake' there. At mesh grouping 5 the centreline runs through
+    // the middle knot's wake (docs/VALIDATION.md, the grouping study).
     rows.push_back(row(
         "bi2014_reduced",
-        fmt::format("velocity reduction 0.3 m behind the net, {} m/s", ref.velocity), "", reduction,
+        fmt::format("velocity reduction 0.3 m behind the net, centreline, {} m/s", ref.velocity),
+        "", named(s, "probes", "wake").at("velocity_reduction").get<double>(),
         0.5 * (stated_figure("bi_reduction_low").value + stated_figure("bi_reduction_high").value),
         {},
-        "mean over the outline's section (probe 'wake_section'); paper: 10-15% "
-        "behind the net (Figure 19)"));
+        "probe 'wake' (a point); paper: 10-15% behind the net on the centreline (Figure 19); "
+        "here through the middle knot's wake"));
+    rows.push_back(row(
+        "bi2014_reduced",
+        fmt::format("velocity reduction 0.3 m behind the net, section mean, {} m/s", ref.velocity),
+        "", named(s, "probes", "wake_section").at("mean_velocity_reduction").get<double>(), {}, {},
+        "mean over the outline's section (probe 'wake_section'; not in the paper); at 0.226 m/s "
+        "5.3-5.5% at mesh grouping 5 and 3, dp 12.5 and 7.5 mm"));
     rows.push_back(row("bi2014_reduced", fmt::format("largest deflection at {} m/s", ref.velocity),
                        "m", named(s, "nets", "bi2014").at("mean_max_deflection_m").get<double>(),
                        {}, {}, "knot row 5 cm above the bottom edge (mesh grouping 5)"));
