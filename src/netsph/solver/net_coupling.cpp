@@ -5,7 +5,6 @@
 #include <utility>
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "netsph/net/current_loads.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
@@ -163,13 +162,7 @@ void place_sinker_reactions(const std::vector<SinkerShare>& shares, const FluidS
     std::vector<CoupledNet::ReactionPoint>& reach = s.net->sinker_reach;
     if (!(wet > 0)) {
       reach.insert(reach.end(), s.at_bar.begin(), s.at_bar.end());
-      if (s.net->reactions_at_bar++ == 0) {
-        spdlog::warn(
-            "net '{}': no water {:.3g} m downstream of knot {}'s share of the sinker bar; its "
-            "reaction goes into the water at the bar, where it slows the flow the bar's drag is "
-            "sampled from (counted in summary.json, nets[].sinker_reactions_at_bar)",
-            s.net->model.name, s.net->reaction_offset, s.knot);
-      }
+      if (s.net->reactions_at_bar++ == 0) s.net->first_knot_reacting_at_bar = s.knot;
     }
     for (std::size_t i = first; i < end && wet > 0; ++i) {
       if (there[i].coverage < kSinkerWetCoverage) continue;
@@ -258,7 +251,7 @@ void advance_coupled_nets(std::vector<CoupledNet>& nets, std::vector<RigidBody>&
     for (std::size_t k = 0; k < nk; ++k) {
       c.sinker_stage_drag[k] =
           calls >= 2 ? (drag_sum[k] - (drag_first[k] + drag_last[k]) * 0.5) / double(calls - 1)
-                     : drag_last[k];
+                     : Vec3d{};  // no sub-step (stage_dt 0): no drag applied
     }
     for (std::size_t k = 0; k < nk; ++k) {
       RigidBody& b = bodies[c.first_body + k];

@@ -67,10 +67,12 @@ struct CoupledNet {
   /// Each knot's sinker drag over the stage as the knot-spring sub-steps applied it (their
   /// trapezoidal mean), N: what the water takes back.
   std::vector<Vec3d> sinker_stage_drag;
-  /// How many times (shares x stages) a share of the bar found no water reaction_offset
-  /// downstream and gave its reaction at the bar, where it slows the water the drag is taken
-  /// from (the first time is logged as a warning; summary.json reports the count).
+  /// How many times (shares x stages, since the run's start or restart) a share of the bar
+  /// found no water reaction_offset downstream and gave its reaction at the bar, where it
+  /// slows the water the drag is taken from, and the knot of the first such share (the run
+  /// warns once; summary.json reports the count).
   std::size_t reactions_at_bar = 0;
+  std::size_t first_knot_reacting_at_bar = 0;
 };
 
 /// The case with one [[body]] appended per knot of every [[net]] (after the case's own

@@ -74,7 +74,7 @@ nlohmann::json NetRecorder::summary(const Simulation& sim) const {
       }
     }
     // Shares x stages whose reaction found no water downstream (since the run's start or
-    // restart): a bar at the outlet or above a free surface.
+    // restart): a bar just before the outlet, a wall or a free surface.
     if (m.sinker_diameter > 0) j["sinker_reactions_at_bar"] = net.reactions_at_bar;
     j["final_max_deflection_m"] = max_normal_deflection(m, net.initial);
     // The bottom knot of the middle column: how far the net's lower edge has swung.

@@ -36,11 +36,38 @@ const char* diffusion_name(DensityDiffusion d) {
   return "?";
 }
 
+/// For a net whose sinker bar gave some of its reaction at the bar (no water downstream of a
+/// share: solver/net_coupling.hpp), what a user should know; empty otherwise.
+std::string sinker_reactions_at_bar_warning(const Simulation& sim, const CoupledNet& net) {
+  if (net.reactions_at_bar == 0) return {};
+  return fmt::format(
+      "net '{}': no water {:.3g} m downstream of the sinker bar at {} ({} times, shares x "
+      "stages): the bar's reaction went into the water at the bar, where it slows the flow its "
+      "drag is sampled from (summary.json: nets[].sinker_reactions_at_bar)",
+      net.model.name, net.reaction_offset,
+      sim.bodies()[net.first_body + net.first_knot_reacting_at_bar].name, net.reactions_at_bar);
+}
+
+/// The warning above, once per net and run, when it first applies.
+void warn_sinker_reactions_at_bar(const Simulation& sim, std::vector<char>& warned) {
+  for (std::size_t n = 0; n < sim.nets().size(); ++n) {
+    if (warned[n]) continue;
+    const std::string w = sinker_reactions_at_bar_warning(sim, sim.nets()[n]);
+    if (w.empty()) continue;
+    spdlog::warn("t = {:.6g} s: {}", sim.time(), w);
+    warned[n] = 1;
+  }
+}
+
 std::vector<std::string> collect_warnings(const Simulation& sim) {
   std::vector<std::string> w = sim.scene().warnings;
   const auto& d = sim.diagnostics();
   if (d.lost_total > 0) {
     w.push_back(fmt::format("{} particles left the domain and were removed", d.lost_total));
+  }
+  for (const CoupledNet& net : sim.nets()) {
+    std::string at_bar = sinker_reactions_at_bar_warning(sim, net);
+    if (!at_bar.empty()) w.push_back(std::move(at_bar));
   }
   return w;
 }
@@ -178,6 +205,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   RunReport r;
   double particle_steps = 0;
   bool warned_lost = false;
+  std::vector<char> warned_at_bar(view ? view->nets().size() : 0, 0);
   if (!opt.resume) write_outputs([&](OutputParticles& p) { outputs->maybe_write(*view, p, 0.0); });
   try {
     while (stepper.time() < end * (1 - 1e-12)) {
@@ -205,6 +233,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
               view->time());
           warned_lost = true;
         }
+        warn_sinker_reactions_at_bar(*view, warned_at_bar);
         outputs->maybe_write(*view, p, wall());
         if (checkpoint_due) write_checkpoint(p);
       });

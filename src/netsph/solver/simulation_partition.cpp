@@ -27,8 +27,13 @@ void Simulation::adopt_global_state(const Simulation& stepped, const StepDiagnos
   p_.next_id = stepped.p_.next_id;
   for (std::size_t b = 0; b < scene_.bodies.size(); ++b)
     scene_.bodies[b] = stepped.scene_.bodies[b];
-  for (std::size_t n = 0; n < nets_.size(); ++n)
+  for (std::size_t n = 0; n < nets_.size(); ++n) {
     nets_[n].model.knots = stepped.nets_[n].model.knots;
+    // The same on every process: the samples are reduced over the processes and each solves
+    // every net.
+    nets_[n].reactions_at_bar = stepped.nets_[n].reactions_at_bar;
+    nets_[n].first_knot_reacting_at_bar = stepped.nets_[n].first_knot_reacting_at_bar;
+  }
 }
 
 void Simulation::adopt_state(const Simulation& stepped, const StepDiagnostics& diagnostics,
