@@ -15,6 +15,7 @@
 #include "case_runs.hpp"
 #include "netsph/backend/cpu/probe_pass.hpp"
 #include "netsph/case/case_reader.hpp"
+#include "netsph/io/checkpoint_file.hpp"
 #include "netsph/net/current_loads.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
 #include "netsph/solver/runner.hpp"
@@ -233,13 +234,17 @@ TEST(NetCoupling, InAPeriodicBoxTheWaterLosesWhatTheNetGainsInTheCrossingsLayout
 // water, but one kernel support (3 cm) downstream of it is the buffer, which holds no fluid to
 // take the reaction. It goes into the water at the bar instead, and the run says so: a warning
 // naming the net and the knot, kept in summary.json with the count (a stage per step at
-// least). In the case as shipped (knot at x = 0) there is water downstream.
+// least), and a restart carries the count on. In the case as shipped (knot at x = 0) there is water
+// downstream.
 TEST(NetCoupling, ABarWithNoWaterDownstreamIsWarnedAboutAndCounted) {
   for (const double x : {0.255, 0.0}) {
-    Simulation sim(test::load_case(
-        "net_tethered_knot.toml",
-        {"net.0.center=[" + std::to_string(x) + ",0.0,0.0]", "simulation.end_time=0.02",
-         "output.snapshot_every=0", "output.force_window=[0.0,0.02]"}));
+    const auto load = [x] {
+      return test::load_case(
+          "net_tethered_knot.toml",
+          {"net.0.center=[" + std::to_string(x) + ",0.0,0.0]", "simulation.end_time=0.02",
+           "output.snapshot_every=0", "output.force_window=[0.0,0.02]"});
+    };
+    Simulation sim(load());
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / "netsph_bar_reaction_at_bar";
     std::filesystem::remove_all(dir);
@@ -258,6 +263,12 @@ TEST(NetCoupling, ABarWithNoWaterDownstreamIsWarnedAboutAndCounted) {
     if (x > 0) {
       EXPECT_GE(count, static_cast<std::size_t>(r.steps)) << x;
       EXPECT_TRUE(warned) << s.at("warnings").dump();
+      // A restart continues the count from the run's last checkpoint (written at its end).
+      Simulation resumed(load());
+      resumed.restore_state(read_checkpoint_file(checkpoint_path(dir)));
+      EXPECT_EQ(resumed.nets()[0].reactions_at_bar, count);
+      EXPECT_EQ(resumed.nets()[0].first_knot_reacting_at_bar,
+                sim.nets()[0].first_knot_reacting_at_bar);
     } else {
       EXPECT_EQ(count, 0u);
       EXPECT_FALSE(warned) << s.at("warnings").dump();

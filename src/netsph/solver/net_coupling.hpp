@@ -67,7 +67,7 @@ struct CoupledNet {
   /// Each knot's sinker drag over the stage as the knot-spring sub-steps applied it (their
   /// trapezoidal mean), N: what the water takes back.
   std::vector<Vec3d> sinker_stage_drag;
-  /// How many times (shares x stages, since the run's start or restart) a share of the bar
+  /// How many times (shares x stages over the run; a restart continues it) a share of the bar
   /// found no water reaction_offset downstream and gave its reaction at the bar, where it
   /// slows the water the drag is taken from, and the knot of the first such share (the run
   /// warns once; summary.json reports the count).

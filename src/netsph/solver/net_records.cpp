@@ -73,8 +73,8 @@ nlohmann::json NetRecorder::summary(const Simulation& sim) const {
         j["mean_sinker_drag_N"] = {f.x, f.y, f.z};
       }
     }
-    // Shares x stages whose reaction found no water downstream (since the run's start or
-    // restart): a bar just before the outlet, a wall or a free surface.
+    // Shares x stages whose reaction found no water downstream (over the run, restarts
+    // included): a bar just before the outlet, a wall or a free surface.
     if (m.sinker_diameter > 0) j["sinker_reactions_at_bar"] = net.reactions_at_bar;
     j["final_max_deflection_m"] = max_normal_deflection(m, net.initial);
     // The bottom knot of the middle column: how far the net's lower edge has swung.

@@ -106,6 +106,12 @@ void Simulation::save_global_state(CheckpointData& c) const {
   auto& knots = c.f64["nets.knots"];
   for (const CoupledNet& net : nets_)
     for (const NetKnot& k : net.model.knots) put3(knots, k.position), put3(knots, k.velocity);
+  // Each net's count of sinker reactions given at the bar and its first knot (2026-12-03 on).
+  auto& at_bar = c.f64["nets.reactions_at_bar"];
+  for (const CoupledNet& net : nets_) {
+    at_bar.push_back(static_cast<double>(net.reactions_at_bar));
+    at_bar.push_back(static_cast<double>(net.first_knot_reacting_at_bar));
+  }
 }
 
 void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
@@ -193,6 +199,14 @@ void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
     for (NetKnot& knot : net.model.knots) {
       knot.position = vec(knots.data() + 6 * k), knot.velocity = vec(knots.data() + 6 * k + 3);
       ++k;
+    }
+  }
+  // Older checkpoints lack the count: it then starts again from the restart.
+  if (const auto a = c.f64.find("nets.reactions_at_bar"); a != c.f64.end()) {
+    if (a->second.size() != 2 * nets_.size()) fail("the nets differ");
+    for (std::size_t i = 0; i < nets_.size(); ++i) {
+      nets_[i].reactions_at_bar = static_cast<std::size_t>(a->second[2 * i]);
+      nets_[i].first_knot_reacting_at_bar = static_cast<std::size_t>(a->second[2 * i + 1]);
     }
   }
   // The device backends continue from the restored particles and bodies.
