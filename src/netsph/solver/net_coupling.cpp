@@ -94,8 +94,10 @@ struct SinkerShare {
   CoupledNet* net;
   std::size_t knot;
   SinkerSamples samples;
-  /// Where its reaction goes if none goes downstream: its wet sample points on the bar.
-  std::vector<CoupledNet::ReactionPoint> at_bar;
+  /// Where its reaction goes if none goes downstream: its wet sample points on the bar (at
+  /// most as many as its samples; a fixed array, as theirs: no allocation per stage).
+  CoupledNet::ReactionPoint at_bar[sizeof(SinkerSamples::points) / sizeof(Vec3d)];
+  int at_bar_count = 0;
 };
 
 /// CoupledNet::sinker_reach from the shares' flows: points along each wet share, moved
@@ -120,7 +122,7 @@ void place_sinker_reactions(const std::vector<SinkerShare>& shares, const FluidS
     // Only the drag's direction matters here (hence unit density).
     const Vec3d drag = sinker_drag(net, knot, c.sinker_flow[s.knot], 1.0);
     if (!(norm(drag) > 0)) {
-      c.sinker_reach.insert(c.sinker_reach.end(), s.at_bar.begin(), s.at_bar.end());
+      c.sinker_reach.insert(c.sinker_reach.end(), s.at_bar, s.at_bar + s.at_bar_count);
       continue;
     }
     const Vec3d downstream = drag * (c.reaction_offset / norm(drag));
@@ -161,7 +163,7 @@ void place_sinker_reactions(const std::vector<SinkerShare>& shares, const FluidS
     }
     std::vector<CoupledNet::ReactionPoint>& reach = s.net->sinker_reach;
     if (!(wet > 0)) {
-      reach.insert(reach.end(), s.at_bar.begin(), s.at_bar.end());
+      reach.insert(reach.end(), s.at_bar, s.at_bar + s.at_bar_count);
       if (s.net->reactions_at_bar++ == 0) s.net->first_knot_reacting_at_bar = s.knot;
     }
     for (std::size_t i = first; i < end && wet > 0; ++i) {
@@ -188,7 +190,7 @@ void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidB
     }
     for (std::size_t k = 0; k < net.knots.size(); ++k) {
       if (net.knots[k].sinker_length <= 0) continue;
-      SinkerShare& s = shares.emplace_back(SinkerShare{&c, k, {}, {}});
+      SinkerShare& s = shares.emplace_back(SinkerShare{&c, k, {}, {}, 0});
       sinker_sample_points(net, net.knots[k], s.samples);
       points.insert(points.end(), s.samples.points, s.samples.points + s.samples.count);
     }
@@ -206,10 +208,10 @@ void sample_sinker_flows(std::vector<CoupledNet>& nets, const std::vector<RigidB
       if (v->coverage < kSinkerWetCoverage) continue;
       sum += v->velocity * s.samples.weights[i];
       weight += s.samples.weights[i];
-      s.at_bar.push_back(
-          {s.knot, s.samples.points[i], s.samples.weights[i] / (v->coverage * v->density)});
+      s.at_bar[s.at_bar_count++] = {s.knot, s.samples.points[i],
+                                    s.samples.weights[i] / (v->coverage * v->density)};
     }
-    for (CoupledNet::ReactionPoint& r : s.at_bar) r.part_per_mass_weight /= weight;
+    for (int i = 0; i < s.at_bar_count; ++i) s.at_bar[i].part_per_mass_weight /= weight;
     s.net->sinker_wet[s.knot] = weight > 0;
     s.net->sinker_flow[s.knot] = weight > 0 ? sum / weight : Vec3d{};
   }
