@@ -18,9 +18,12 @@
 #include <string>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "case_runs.hpp"
+#include "netsph/backend/cpu/probe_pass.hpp"
 #include "netsph/io/checkpoint_file.hpp"
+#include "netsph/solver/output_particles.hpp"
 #include "netsph/solver/runner.hpp"
 #include "state_difference.hpp"
 
@@ -279,6 +282,86 @@ TEST(DeviceParity, HostDeviceRunWritesTheOutputsOfTheCpuRun) {
   }
 }
 
+// The series rows' measures and the probes are computed on the device (Exec::reduce with the
+// CPU's tally formula; the sinker bars' sampling kernel), so a run copies its particles back
+// only for snapshots and checkpoints. Both must equal what the CPU code computes from the
+// particles copied back, and must not copy them.
+// `tolerance`: of the samples, relative to 1 (coverage) or to the value; the host executor
+// sums the same terms in another order, the GPU may also contract them differently.
+void expect_measures_and_samples_where_they_are(StepBackend backend, double tolerance) {
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/good/plot_smoke.toml", {});
+  Simulation dev(spec, backend);
+  std::vector<Vec3d> points;
+  for (int k = 0; k <= 40; ++k) {
+    // Across the duct (fluid, its walls, the knots) and out of the fluid and the grid.
+    points.push_back({-0.1 + 0.009 * k, 0.0, -0.14 + 0.006 * k});
+    points.push_back({0.02, -0.2 + 0.01 * k, 0.0});
+  }
+  std::vector<ShepardValue> on_device(points.size()), on_host(points.size());
+  for (int s = 0; s < 25; ++s) dev.step();
+  const std::optional<ParticleTally> t = dev.tally_on_device();
+  ASSERT_TRUE(t.has_value());
+  ASSERT_TRUE(dev.sample_on_device(points, on_device));
+  EXPECT_EQ(dev.device_downloads(), 0);
+
+  const ParticleSet& p = dev.particles();  // the one copy back
+  EXPECT_EQ(dev.device_downloads(), 1);
+  const GlobalMeasures host = measure_particles(p, dev.model().mass);
+  const GlobalMeasures device = measures_of(*t, dev.model().mass);
+  EXPECT_GT(host.fluid, 0u);
+  EXPECT_GT(host.walls, 0u);
+  EXPECT_EQ(device.fluid, host.fluid);
+  EXPECT_EQ(device.walls, host.walls);
+  EXPECT_EQ(device.buffer, host.buffer);
+  EXPECT_GT(host.kinetic_energy, 0.0);
+  EXPECT_NEAR(device.kinetic_energy, host.kinetic_energy, 1e-12 * host.kinetic_energy);
+  EXPECT_EQ(device.max_speed, host.max_speed);
+  EXPECT_EQ(device.min_density, host.min_density);
+  EXPECT_EQ(device.max_density, host.max_density);
+
+  sample_points(dev.model(), dev.grid(), p, points, on_host);
+  int wet = 0, dry = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    SCOPED_TRACE(k);
+    const ShepardValue& a = on_host[k];
+    const ShepardValue& b = on_device[k];
+    EXPECT_NEAR(b.coverage, a.coverage, tolerance);
+    wet += a.coverage > 0.5, dry += a.coverage == 0;
+    if (!(a.coverage > 0)) continue;
+    EXPECT_LT(norm(b.velocity - a.velocity), tolerance * (0.3 + norm(a.velocity)));
+    EXPECT_NEAR(b.pressure, a.pressure, tolerance * (1 + std::fabs(a.pressure)));
+    EXPECT_NEAR(b.density, a.density, tolerance * a.density);
+  }
+  EXPECT_GT(wet, 20);  // the points cross the fluid ...
+  EXPECT_GT(dry, 5);   // ... and leave it
+  EXPECT_EQ(dev.device_downloads(), 1);
+}
+
+TEST(DeviceParity, HostDeviceMeasuresAndSamplesTheParticlesWhereTheyAre) {
+  expect_measures_and_samples_where_they_are(StepBackend::HostDevice, 1e-9);
+}
+
+// A whole run without snapshots: its series rows and probes are measured on the device, and
+// the particles come back once, for the checkpoint at the end.
+TEST(DeviceParity, HostDeviceRunCopiesParticlesBackOnlyForCheckpoints) {
+  const CaseSpec spec = read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/good/plot_smoke.toml",
+                                       {"output.snapshots=false", "output.checkpoint_every=1.0"});
+  Simulation sim(spec, StepBackend::HostDevice);
+  RunOptions opt;
+  opt.out_dir = std::filesystem::temp_directory_path() / "netsph_device_downloads";
+  opt.progress = false;
+  std::filesystem::remove_all(opt.out_dir);
+  const RunReport report = run_simulation(sim, opt);
+  EXPECT_EQ(report.status, "completed");
+  EXPECT_GT(sim.steps(), 20);
+  EXPECT_EQ(sim.device_downloads(), 1);
+  std::ifstream in(opt.out_dir / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_GT(j["probes"].size(), 0u);
+  EXPECT_GT(j["final_state"]["kinetic_energy_J"].get<double>(), 0.0);
+}
+
 TEST(DeviceParity, HostDeviceRunContinuesFromACheckpoint) {
   const CaseSpec spec =
       read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/good/plot_smoke.toml", {});
@@ -385,6 +468,11 @@ TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("--backend cpu"), std::string::npos) << e.what();
   }
+}
+
+TEST(DeviceParity, CudaMeasuresAndSamplesTheParticlesWhereTheyAre) {
+  SKIP_WITHOUT_GPU();
+  expect_measures_and_samples_where_they_are(StepBackend::Cuda, 1e-5);
 }
 
 TEST(DeviceParity, CudaBoxOnTheFloorWithContactsMatchesTheCpuBackend) {

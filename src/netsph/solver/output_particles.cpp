@@ -1,45 +1,52 @@
 #include "netsph/solver/output_particles.hpp"
 
 #include <cmath>
-#include <limits>
+#include <optional>
 
 #include "netsph/backend/cpu/probe_pass.hpp"
 
 namespace netsph {
 
-GlobalMeasures measure_particles(const ParticleSet& p, double mass,
-                                 std::span<const std::uint8_t> keep) {
-  GlobalMeasures g;
-  double ke = 0, vmax2 = 0, rmin = std::numeric_limits<double>::infinity(), rmax = -rmin;
-  std::size_t nf = 0, nw = 0, nb = 0;
+// The CPU's reduction of the tallies (the device step reduces with the same merge).
+#pragma omp declare reduction(merge:ParticleTally                         \
+                              : omp_out = merge_tallies(omp_out, omp_in)) \
+    initializer(omp_priv = ParticleTally{})
+
+ParticleTally tally_particles(const ParticleSet& p, double mass,
+                              std::span<const std::uint8_t> keep) {
+  ParticleTally t;
   const auto n = static_cast<std::int64_t>(p.size());
   const bool all = keep.empty();
-#pragma omp parallel for reduction(+ : ke, nf, nw, nb) reduction(max : vmax2, rmax) \
-    reduction(min : rmin)
+#pragma omp parallel for reduction(merge : t)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!all && !keep[i]) continue;
-    nw += p.kind[i] == ParticleKind::Wall;
-    nb += p.kind[i] == ParticleKind::Buffer;
-    if (!is_fluid(p.kind[i])) continue;
-    const double v2 = norm2(Vec3d(p.vel[i]));
-    ke += 0.5 * mass * v2;
-    vmax2 = std::max(vmax2, v2);
-    rmin = std::min(rmin, static_cast<double>(p.rho[i]));
-    rmax = std::max(rmax, static_cast<double>(p.rho[i]));
-    ++nf;
+    t = merge_tallies(t, tally_particle(p.kind[i], p.vel[i], p.rho[i], mass));
   }
-  g.fluid = nf;
-  g.walls = nw;
-  g.buffer = nb;
-  g.kinetic_energy = ke;
-  g.fluid_mass = mass * static_cast<double>(nf);
-  g.max_speed = std::sqrt(vmax2);
-  g.min_density = nf ? rmin : 0;
-  g.max_density = nf ? rmax : 0;
+  return t;
+}
+
+GlobalMeasures measures_of(const ParticleTally& t, double mass) {
+  GlobalMeasures g;
+  g.fluid = t.fluid;
+  g.walls = t.walls;
+  g.buffer = t.buffer;
+  g.kinetic_energy = t.kinetic_energy;
+  g.fluid_mass = mass * static_cast<double>(t.fluid);
+  g.max_speed = std::sqrt(t.max_speed2);
+  g.min_density = t.fluid ? t.min_density : 0;
+  g.max_density = t.fluid ? t.max_density : 0;
   return g;
 }
 
+GlobalMeasures measure_particles(const ParticleSet& p, double mass,
+                                 std::span<const std::uint8_t> keep) {
+  return measures_of(tally_particles(p, mass, keep), mass);
+}
+
 GlobalMeasures measure(const Simulation& sim) {
+  // On the device backends the device reduces its particles: a series row costs no transfer.
+  if (const std::optional<ParticleTally> t = sim.tally_on_device())
+    return measures_of(*t, sim.model().mass);
   return measure_particles(sim.particles(), sim.model().mass);
 }
 
@@ -59,13 +66,15 @@ std::size_t snapshot_particle_count(const Simulation& sim) {
 }
 
 void SimulationParticles::sample(std::span<const Vec3d> points, std::span<ShepardValue> values) {
+  // On the device backends the device samples its particles (a probe costs no transfer).
+  if (sim_.sample_on_device(points, values)) return;
   // The grid is the one sorted at the start of the last step: its cells are searched with a
   // skin that covers the particles' motion over a step (neighbors/cell_grid.hpp).
   sample_points(sim_.model(), sim_.grid(), sim_.particles(), points, values);
 }
 
 std::uint64_t SimulationParticles::count(ParticleSelection which) {
-  return which == ParticleSelection::All ? sim_.particles().size() : snapshot_particle_count(sim_);
+  return which == ParticleSelection::All ? sim_.particle_count() : snapshot_particle_count(sim_);
 }
 
 void SimulationParticles::pieces(ParticleSelection which,

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "netsph/solver/simulation.hpp"
+#include "netsph/sph/particle_tally.hpp"
 #include "netsph/sph/shepard.hpp"
 
 namespace netsph {
@@ -23,6 +24,12 @@ struct GlobalMeasures {
   double min_density = 0, max_density = 0;  ///< kg/m^3 (0 without fluid)
 };
 
+/// The tally (sph/particle_tally.hpp) of the particles of `p` (those with keep[i] != 0 when
+/// `keep` is given), each of mass `mass`.
+ParticleTally tally_particles(const ParticleSet& p, double mass,
+                              std::span<const std::uint8_t> keep = {});
+/// The measures a tally gives (0 for the densities without fluid).
+GlobalMeasures measures_of(const ParticleTally& t, double mass);
 /// The measures of the particles of `p` (those with keep[i] != 0 when `keep` is given), each
 /// of mass `mass`.
 GlobalMeasures measure_particles(const ParticleSet& p, double mass,

@@ -37,6 +37,8 @@
 #include "netsph/solver/net_coupling.hpp"
 #include "netsph/solver/scene.hpp"
 #include "netsph/solver/step_partition.hpp"
+#include "netsph/sph/particle_tally.hpp"
+#include "netsph/sph/shepard.hpp"
 #include "netsph/sph/shifting.hpp"
 #include "netsph/sph/time_step.hpp"
 
@@ -106,6 +108,15 @@ class Simulation {
     sync_from_device();
     return p_;
   }
+  /// On the device backends, the measures of the particles (sph/particle_tally.hpp) reduced
+  /// on the device, without copying them back; nullopt on the CPU backend.
+  std::optional<ParticleTally> tally_on_device() const;
+  /// On the device backends, samples the fluid at `points` on the device (the CPU's probe
+  /// sampling, backend/cpu/probe_pass.hpp) and returns true; false on the CPU backend.
+  bool sample_on_device(std::span<const Vec3d> points, std::span<ShepardValue> values) const;
+  /// How many times the particles were copied back from the device (outputs, checkpoints,
+  /// diagnostics); 0 on the CPU backend.
+  std::int64_t device_downloads() const { return device_downloads_; }
   /// The number of particles, without a transfer from the device.
   std::size_t particle_count() const { return device_ ? device_->size() : p_.size(); }
   StepBackend backend() const { return backend_; }
@@ -269,6 +280,9 @@ class Simulation {
   std::unique_ptr<DeviceRun> device_;
   // Particles and grid are behind the device's by a step (copied back by sync_from_device).
   mutable bool device_ahead_ = false;
+  mutable std::int64_t device_downloads_ = 0;
+  // The device has sorted its particles (stepped) since it was built: its cell table is valid.
+  bool device_stepped_ = false;
   mutable std::vector<std::uint32_t> device_cells_;
 };
 

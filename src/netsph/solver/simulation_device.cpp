@@ -50,11 +50,13 @@ void Simulation::start_device() {
   }
   device_->set_clock(time_, steps_, dt_floor_);
   device_ahead_ = false;
+  device_stepped_ = false;
 }
 
 void Simulation::device_step() {
   const DeviceStepReport r = device_->step();
   device_ahead_ = true;
+  device_stepped_ = true;
   diag_.dt_limits = r.dt_limits;
   if (steps_ == 0) dt_floor_ = r.dt_floor;
   if (r.status == DeviceStepStatus::DtCollapsed) {
@@ -99,9 +101,27 @@ std::optional<DevicePhaseTimes> Simulation::device_phase_times() const {
   return device_->phase_times();
 }
 
+// The device's particles are always the newest (as of the last step, or equal to the host's
+// copy after a download): the outputs read them there whether or not a copy came back, so a
+// probe gives the same value on a snapshot's step as on any other.
+std::optional<ParticleTally> Simulation::tally_on_device() const {
+  if (!device_) return std::nullopt;
+  return device_->tally();
+}
+
+bool Simulation::sample_on_device(std::span<const Vec3d> points,
+                                  std::span<ShepardValue> values) const {
+  // Before its first step (a new run, a restart) the device has no cell table yet; its
+  // particles are the host's, which the host's grid samples.
+  if (!device_ || !device_stepped_) return false;
+  device_->sample_fluid(points, values);
+  return true;
+}
+
 void Simulation::sync_from_device() const {
   if (!device_ || !device_ahead_) return;
   device_ahead_ = false;
+  ++device_downloads_;
   // p_ is a reference member: const here is the Simulation's, not the particles'.
   device_->download(p_);
   device_->download_cell_begin(device_cells_);

@@ -4,14 +4,17 @@
 // default stream in order; the reductions copy their result back and so synchronise.
 #include <cuda_runtime.h>
 
+#include <cub/block/block_reduce.cuh>
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
 #include <cub/device/device_scan.cuh>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "netsph/core/error.hpp"
 
@@ -45,6 +48,23 @@ __global__ void count_below_kernel(const Key* keys, std::uint32_t n, Key bound,
                                    std::uint32_t* out) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i < n && keys[i] < bound && (i + 1 == n || keys[i + 1] >= bound)) *out = i + 1;
+}
+
+/// Blocks of CudaExec::reduce: enough to fill an H100's 132 multiprocessors several times over,
+/// few enough that their partial results cost nothing to copy back and combine on the host.
+inline constexpr unsigned kReduceBlocks = 1024;
+
+/// partial[block] = the block's combine of map(i) over its threads' strided share of [0, n).
+template <class T, class Map, class Combine>
+__global__ void reduce_kernel(std::uint32_t n, T identity, Map map, Combine combine, T* partial) {
+  using BlockReduce = cub::BlockReduce<T, kCudaBlock>;
+  __shared__ typename BlockReduce::TempStorage temp;
+  T acc = identity;
+  const std::uint32_t stride = gridDim.x * blockDim.x;
+  for (std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += stride)
+    acc = combine(acc, map(i));
+  const T block = BlockReduce(temp).Reduce(acc, combine);
+  if (threadIdx.x == 0) partial[blockIdx.x] = block;
 }
 
 /// max(a, b) with NaN as the identity, as HostExec::max_of: CUB's own maximum keeps a NaN that
@@ -177,6 +197,26 @@ struct CudaExec {
     T h{};
     cuda_check(cudaMemcpy(&h, out.data(), sizeof(T), cudaMemcpyDeviceToHost), "max (copy)");
     return h > T(0) ? h : T(0);
+  }
+
+  /// The combine of map(i) over [0, n) and identity (HostExec::reduce's, grouped by blocks:
+  /// combine must be associative; it runs on the device and on the host, map on the device).
+  template <class T, class Map, class Combine>
+  static T reduce(std::size_t n, T identity, Map map, Combine combine) {
+    if (n == 0) return identity;
+    const auto blocks =
+        static_cast<unsigned>(std::min<std::size_t>((n + kBlock - 1) / kBlock, kReduceBlocks));
+    static DeviceBuffer<T> partial;
+    partial.resize(blocks);
+    reduce_kernel<<<blocks, kBlock>>>(static_cast<std::uint32_t>(n), identity, map, combine,
+                                      partial.data());
+    checked_launch();
+    std::vector<T> h(blocks);
+    cuda_check(cudaMemcpy(h.data(), partial.data(), blocks * sizeof(T), cudaMemcpyDeviceToHost),
+               "reduce (copy)");
+    T acc = identity;
+    for (const T& x : h) acc = combine(acc, x);
+    return acc;
   }
 
   /// out[i] = in[0] + ... + in[i - 1] (in may be out: CUB scans in place); returns the sum of

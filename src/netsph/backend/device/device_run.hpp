@@ -3,6 +3,7 @@
 // (Simulation, solver/simulation_device.cpp) drives the CUDA instantiation without seeing
 // CUDA.
 #include <memory>
+#include <span>
 
 #include "netsph/backend/device/device_stepper.hpp"
 
@@ -19,6 +20,12 @@ class DeviceRun {
   virtual std::size_t size() const = 0;
   virtual double bytes_per_particle() const = 0;
   virtual void download_cell_begin(std::vector<std::uint32_t>& begin) const = 0;
+  /// The measures of the particles as of the last step (sph/particle_tally.hpp), reduced on
+  /// the device.
+  virtual ParticleTally tally() = 0;
+  /// The fluid at `points` as of the last step (Shepard-corrected, as the CPU's probes),
+  /// sampled on the device.
+  virtual void sample_fluid(std::span<const Vec3d> points, std::span<ShepardValue> values) = 0;
   virtual void set_clock(double time, std::int64_t steps, double dt_floor) = 0;
   /// The phase profile (phase_profile.hpp): on restarts its sums.
   virtual void set_profiling(bool on) = 0;
@@ -37,6 +44,10 @@ class DeviceRunOn final : public DeviceRun {
   double bytes_per_particle() const override { return s_.bytes_per_particle(); }
   void download_cell_begin(std::vector<std::uint32_t>& begin) const override {
     s_.download_cell_begin(begin);
+  }
+  ParticleTally tally() override { return s_.tally(); }
+  void sample_fluid(std::span<const Vec3d> points, std::span<ShepardValue> values) override {
+    s_.sample_fluid(points, values);
   }
   void set_clock(double time, std::int64_t steps, double dt_floor) override {
     s_.set_clock(time, steps, dt_floor);

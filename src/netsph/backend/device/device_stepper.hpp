@@ -15,7 +15,8 @@
 // transitions, inlet particles created by a scan of flags, imposed or extrapolated buffer
 // state), rigid bodies (fixed, floating, prescribed; nets' knots through the host's
 // knot-spring solver), contacts, periodic axes, shifting, both kernels, both viscosity models,
-// every density diffusion. Not yet: outputs (probes, series): the caller downloads particles.
+// every density diffusion. Outputs: the probes and the series rows' measures are computed on
+// the device (sample_fluid, tally); snapshots and checkpoints download the particles.
 //
 // Bodies and nets stay on the host: after each rates pass the step reduces every body's force
 // and torque on the device (one pass over particles, atomics per body), copies those 12
@@ -37,8 +38,9 @@
 // total, upload(Buffer<T>&, const T*, n), download(T*, const Buffer<T>&, n),
 // for_each_occupying<MinBlocks>(n, f) (for_each with registers capped for MinBlocks blocks of
 // 256 threads a multiprocessor; a plain for_each on the host), and
-// atomic_add(double*, double) callable inside f, and synchronize() (waits for the device; for
-// the phase profile). f must be a NETSPH_LAMBDA: on CUDA it runs on the device.
+// atomic_add(double*, double) callable inside f, reduce(n, identity, map, combine) -> the
+// combine of map(0..n) (map runs on the device, combine on both), and synchronize() (waits for the
+// device; for the phase profile). f must be a NETSPH_LAMBDA: on CUDA it runs on the device.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -52,6 +54,7 @@
 #include "netsph/backend/device/phase_profile.hpp"
 #include "netsph/backend/device/work_area.hpp"
 #include "netsph/neighbors/grid_index.hpp"
+#include "netsph/sph/particle_tally.hpp"
 #include "netsph/sph/time_step.hpp"
 
 #if defined(__CUDACC__)
@@ -619,6 +622,18 @@ class DeviceStepper {
     sample_sums_host_.resize(n);
     Exec::download(sample_sums_host_.data(), sample_sums_, n);
     for (std::size_t k = 0; k < n; ++k) values[k] = shepard_value(sample_sums_host_[k]);
+  }
+
+  /// The series rows' measures of the particles as of the last step, reduced where they are.
+  ParticleTally tally() {
+    const DeviceState st = state();
+    const double mass = s_.model.mass;
+    return Exec::reduce(
+        n_, ParticleTally{},
+        [=] NETSPH_LAMBDA(std::uint32_t i) {
+          return tally_particle(st.kind[i], st.vel[i], st.rho[i], mass);
+        },
+        MergeTallies{});
   }
 
   template <class K>

@@ -111,6 +111,15 @@ struct HostExec {
     return m;
   }
 
+  /// combine(...combine(combine(identity, map(0)), map(1))..., map(n - 1)): one pass in
+  /// order (CudaExec's groups the terms by blocks; combine must be associative).
+  template <class T, class Map, class Combine>
+  static T reduce(std::size_t n, T identity, Map map, Combine combine) {
+    T acc = identity;
+    for (std::size_t i = 0; i < n; ++i) acc = combine(acc, map(static_cast<std::uint32_t>(i)));
+    return acc;
+  }
+
   /// Every call has finished when it returns.
   static void synchronize() {}
 
