@@ -21,10 +21,11 @@
 #include <vector>
 
 #include "case_runs.hpp"
-#include "netsph/backend/cpu/probe_pass.hpp"
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/solver/output_particles.hpp"
 #include "netsph/solver/runner.hpp"
+#include "netsph/sph/kernels.hpp"
+#include "netsph/sph/shepard.hpp"
 #include "state_difference.hpp"
 
 #include <nlohmann/json.hpp>
@@ -286,11 +287,40 @@ TEST(DeviceParity, HostDeviceRunWritesTheOutputsOfTheCpuRun) {
 // CPU's tally formula; the sinker bars' sampling kernel), so a run copies its particles back
 // only for snapshots and checkpoints. Both must equal what the CPU code computes from the
 // particles copied back, and must not copy them.
-// `tolerance`: of the samples, relative to 1 (coverage) or to the value; the host executor
-// sums the same terms in another order, the GPU may also contract them differently.
-void expect_measures_and_samples_where_they_are(StepBackend backend, double tolerance) {
+/// The Shepard sums at `at` over every fluid particle of `p` (nearest periodic image), without
+/// the grid: the reference for the device's samples, independent of its cell table.
+ShepardValue brute_force_sample(const Simulation& sim, const ParticleSet& p, const Vec3d& at) {
+  const FluidModel& m = sim.model();
+  const auto& domain = sim.spec().domain;
+  ShepardSums sums;
+  with_kernel(m.kernel_type, [&](auto kernel) {
+    using K = decltype(kernel);
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      if (p.kind[j] != ParticleKind::Fluid) continue;
+      Vec3d d = at - p.pos[j];
+      for (int axis = 0; axis < 3; ++axis) {
+        if (const double period = domain.period(axis); period > 0)
+          d[axis] -= period * std::round(d[axis] / period);
+      }
+      const double r2 = norm2(d);
+      if (!(r2 < m.support2)) continue;
+      shepard_accumulate_fluid(sums, kernel_value<K>(m.kernel, static_cast<Real>(std::sqrt(r2))),
+                               m.mass, p.rho[j], p.vel[j], m.eos);
+    }
+    return 0;
+  });
+  return shepard_value(sums);
+}
+
+// `tolerance`: of the samples, relative to 1 (coverage) or to the value; the reference sums
+// the same terms in another order, the GPU may also contract them differently.
+// `overrides` that make the particles move past the grid's skin within a step test the
+// samples on the cell table of the half step's re-sort.
+void expect_measures_and_samples_where_they_are(StepBackend backend, double tolerance,
+                                                const std::vector<std::string>& overrides,
+                                                bool resorts) {
   const CaseSpec spec =
-      read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/good/plot_smoke.toml", {});
+      read_case_file(std::string(NETSPH_TEST_CASES_DIR) + "/good/plot_smoke.toml", overrides);
   Simulation dev(spec, backend);
   std::vector<Vec3d> points;
   for (int k = 0; k <= 40; ++k) {
@@ -298,8 +328,13 @@ void expect_measures_and_samples_where_they_are(StepBackend backend, double tole
     points.push_back({-0.1 + 0.009 * k, 0.0, -0.14 + 0.006 * k});
     points.push_back({0.02, -0.2 + 0.01 * k, 0.0});
   }
-  std::vector<ShepardValue> on_device(points.size()), on_host(points.size());
+  std::vector<ShepardValue> on_device(points.size());
+  // Before its first step the device has no cell table: the host samples.
+  EXPECT_FALSE(dev.sample_on_device(points, on_device));
   for (int s = 0; s < 25; ++s) dev.step();
+  if (resorts) {
+    EXPECT_GT(dev.diagnostics().resorts, 0);
+  }
   const std::optional<ParticleTally> t = dev.tally_on_device();
   ASSERT_TRUE(t.has_value());
   ASSERT_TRUE(dev.sample_on_device(points, on_device));
@@ -320,26 +355,45 @@ void expect_measures_and_samples_where_they_are(StepBackend backend, double tole
   EXPECT_EQ(device.min_density, host.min_density);
   EXPECT_EQ(device.max_density, host.max_density);
 
-  sample_points(dev.model(), dev.grid(), p, points, on_host);
+  const double pressure_scale =
+      spec.fluid.density * dev.scene().sound_speed * dev.scene().sound_speed;
   int wet = 0, dry = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
     SCOPED_TRACE(k);
-    const ShepardValue& a = on_host[k];
+    const ShepardValue a = brute_force_sample(dev, p, points[k]);
     const ShepardValue& b = on_device[k];
     EXPECT_NEAR(b.coverage, a.coverage, tolerance);
     wet += a.coverage > 0.5, dry += a.coverage == 0;
-    if (!(a.coverage > 0)) continue;
+    // At a tiny coverage one particle at the support's edge, in or out by a rounding, moves
+    // the normalised values by its own: the coverage above has already compared it.
+    if (!(a.coverage > 1e-3)) continue;
     EXPECT_LT(norm(b.velocity - a.velocity), tolerance * (0.3 + norm(a.velocity)));
-    EXPECT_NEAR(b.pressure, a.pressure, tolerance * (1 + std::fabs(a.pressure)));
+    // Gauge pressures are small differences of the equation of state's large terms: their
+    // scale is rho0 c0^2.
+    EXPECT_NEAR(b.pressure, a.pressure, tolerance * pressure_scale);
     EXPECT_NEAR(b.density, a.density, tolerance * a.density);
   }
   EXPECT_GT(wet, 20);  // the points cross the fluid ...
   EXPECT_GT(dry, 5);   // ... and leave it
   EXPECT_EQ(dev.device_downloads(), 1);
+
+  // A restart rebuilds the device step, which has no cell table until it steps again.
+  CheckpointData saved;
+  dev.save_state(saved);
+  dev.restore_state(saved);
+  EXPECT_FALSE(dev.sample_on_device(points, on_device));
+  dev.step();
+  EXPECT_TRUE(dev.sample_on_device(points, on_device));
 }
 
+// The plot_smoke duct at 1.5 m/s and cfl 0.6: the particles outrun the grid's skin in every
+// half step (cell table of the re-sort).
+const std::vector<std::string> kFastDuct = {"simulation.cfl=0.6", "fill.0.velocity=[1.5, 0, 0]",
+                                            "wall.0.velocity=[1.5, 0, 0]", "inlet.0.velocity=1.5"};
+
 TEST(DeviceParity, HostDeviceMeasuresAndSamplesTheParticlesWhereTheyAre) {
-  expect_measures_and_samples_where_they_are(StepBackend::HostDevice, 1e-9);
+  expect_measures_and_samples_where_they_are(StepBackend::HostDevice, 1e-6, {}, false);
+  expect_measures_and_samples_where_they_are(StepBackend::HostDevice, 1e-6, kFastDuct, true);
 }
 
 // A whole run without snapshots: its series rows and probes are measured on the device, and
@@ -472,7 +526,8 @@ TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {
 
 TEST(DeviceParity, CudaMeasuresAndSamplesTheParticlesWhereTheyAre) {
   SKIP_WITHOUT_GPU();
-  expect_measures_and_samples_where_they_are(StepBackend::Cuda, 1e-5);
+  expect_measures_and_samples_where_they_are(StepBackend::Cuda, 1e-5, {}, false);
+  expect_measures_and_samples_where_they_are(StepBackend::Cuda, 1e-5, kFastDuct, true);
 }
 
 TEST(DeviceParity, CudaBoxOnTheFloorWithContactsMatchesTheCpuBackend) {

@@ -112,7 +112,8 @@ std::optional<ParticleTally> Simulation::tally_on_device() const {
 bool Simulation::sample_on_device(std::span<const Vec3d> points,
                                   std::span<ShepardValue> values) const {
   // Before its first step (a new run, a restart) the device has no cell table yet; its
-  // particles are the host's, which the host's grid samples.
+  // particles are the host's, which the host's path samples (a resumed run writes nothing
+  // before it steps).
   if (!device_ || !device_stepped_) return false;
   device_->sample_fluid(points, values);
   return true;

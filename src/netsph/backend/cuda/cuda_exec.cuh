@@ -50,8 +50,9 @@ __global__ void count_below_kernel(const Key* keys, std::uint32_t n, Key bound,
   if (i < n && keys[i] < bound && (i + 1 == n || keys[i + 1] >= bound)) *out = i + 1;
 }
 
-/// Blocks of CudaExec::reduce: enough to fill an H100's 132 multiprocessors several times over,
-/// few enough that their partial results cost nothing to copy back and combine on the host.
+/// The most blocks CudaExec::reduce launches (fewer for fewer particles): about one and a half
+/// waves of an H100's 132 multiprocessors at the tally's 44 registers (5 blocks each), few
+/// enough that their partial results cost nothing to copy back and combine on the host.
 inline constexpr unsigned kReduceBlocks = 1024;
 
 /// partial[block] = the block's combine of map(i) over its threads' strided share of [0, n).
