@@ -262,6 +262,12 @@ void CaseReader::read_simulation(const std::string& default_name) {
   SimulationSpec& s = spec_.simulation;
   s.name = r.string("name", default_name);
   if (r.has("name") && s.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
+  // The name is the default output folder (out/<name>): a path in it would write elsewhere.
+  if (r.has("name") && !plain_file_name(s.name)) {
+    r.fail_value("name", *r.find("name"),
+                 "must be a plain file name: letters, digits, '_', '-' and '.' (the run writes "
+                 "to out/<name> unless -o names a folder)");
+  }
   s.dimensions = static_cast<int>(r.integer("dimensions", IntRule{2, 3}, 3));
   s.dp = r.number("dp", NumberRule::positive("m"), 0.0);  // required unless net-only: require_dp
   s.h_over_dp = r.number("h_over_dp", NumberRule::closed(1, 3, ""), s.h_over_dp);

@@ -246,6 +246,7 @@ double Simulation::compute_dt(const RateReductions& local) {
     dt_floor_ = spec_.simulation.dt_min > 0 ? spec_.simulation.dt_min : 1e-4 * dt;
   }
   if (!(dt >= dt_floor_)) {
+    check_dt_min_reachable(dt);
     throw SimulationUnstable(
         "solver",
         fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.3g} s is below "
@@ -257,6 +258,18 @@ double Simulation::compute_dt(const RateReductions& local) {
   }
   diag_.dt_limits.dt = dt;
   return dt;
+}
+
+void Simulation::check_dt_min_reachable(double first_dt) const {
+  if (steps_ != 0 || !(spec_.simulation.dt_min > 0) || !(first_dt < spec_.simulation.dt_min))
+    return;
+  throw Error(spec_.source,
+              fmt::format("simulation.dt_min = {:.4g} s is larger than the first time step, "
+                          "{:.4g} s (force limit {:.3g} s, acoustic-viscous limit {:.3g} s, cfl "
+                          "{:.3g}): set dt_min below {:.3g} s, or leave it out (the floor is then "
+                          "1e-4 of the first step)",
+                          spec_.simulation.dt_min, first_dt, diag_.dt_limits.force,
+                          diag_.dt_limits.acoustic, spec_.simulation.cfl, first_dt));
 }
 
 void Simulation::update_wall_kinematics(double dt) {

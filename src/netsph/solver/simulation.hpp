@@ -228,6 +228,9 @@ class Simulation {
   void sample_fluid_at_stage(std::span<const Vec3d> points, std::span<ShepardValue> values);
   Vec3f body_point_velocity(std::size_t i) const;
   [[noreturn]] void fail_non_finite(std::int64_t index) const;
+  /// On the first step: a simulation.dt_min above the first step's dt is the case's mistake,
+  /// not a collapse; says so (netsph::Error) instead of blaming the particles.
+  void check_dt_min_reachable(double first_dt) const;
   /// With a partition: owned_ from the present positions (exact right after the exchange).
   void mark_owned();
   /// With a partition: the first non-finite particle this process owns (or whose position is

@@ -60,6 +60,7 @@ void Simulation::device_step() {
   diag_.dt_limits = r.dt_limits;
   if (steps_ == 0) dt_floor_ = r.dt_floor;
   if (r.status == DeviceStepStatus::DtCollapsed) {
+    check_dt_min_reachable(r.dt_limits.dt);
     throw SimulationUnstable(
         "solver",
         fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.3g} s is below "
