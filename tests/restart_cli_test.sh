@@ -36,6 +36,11 @@ if "$netsph" -q run --restart "$tmp/split" --set simulation.dp=0.04 2>"$tmp/err"
   echo "restart with another dp ran"; exit 1
 fi
 grep -q "start a new run" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+# A restart whose end is not after the checkpoint has nothing to run: a clear error.
+if "$netsph" -q run --restart "$tmp/whole" --no-plots 2>"$tmp/err"; then
+  echo "restart of a finished run ran"; exit 1
+fi
+grep -q "nothing is left to run" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 
 # Without particle snapshots the net's shapes still go out at the snapshot times, and a restart
 # numbers on from them.

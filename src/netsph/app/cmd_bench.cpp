@@ -3,7 +3,7 @@
 // particles (walls included) and bytes per particle.
 #include <chrono>
 #include <cmath>
-#include <fstream>
+#include <filesystem>
 #include <optional>
 
 #include <fmt/format.h>
@@ -12,6 +12,7 @@
 
 #include "netsph/app/commands.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/io/atomic_file.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {
@@ -76,6 +77,21 @@ int bench_command(const BenchArgs& args) {
                 "host-device); profile the CPU step with perf (docs/PERFORMANCE.md)");
   // Particle count at the reference dp, to pick dp for each requested size (N ~ dp^-3).
   const double n_ref = static_cast<double>(Simulation(bench_case(kReferenceDp)).particles().size());
+  const auto dp_for = [n_ref](double target) { return kReferenceDp * std::cbrt(n_ref / target); };
+  // Every size and the output file are checked before the first run, which may take minutes.
+  for (double target : args.sizes) {
+    if (!(target >= 1000)) throw Error("--sizes", "particle counts must be >= 1000");
+    try {
+      check_case_fits_memory(bench_case(dp_for(target)), backend);
+    } catch (const Error& e) {
+      throw Error("--sizes", fmt::format("{:.3g} particles: {}", target, e.message()));
+    }
+  }
+  if (!args.json_path.empty()) {
+    const std::filesystem::path folder = std::filesystem::absolute(args.json_path).parent_path();
+    if (!std::filesystem::is_directory(folder))
+      throw Error("--json", "the folder " + folder.string() + " does not exist");
+  }
   spdlog::info(
       "bench: 3D dam break (cases/dambreak3d.toml), backend {}, {} threads, {} steps "
       "after one warm-up step",
@@ -84,10 +100,9 @@ int bench_command(const BenchArgs& args) {
              "wall [s]", "particle-steps/s", "bytes/particle");
   std::vector<BenchRow> rows;
   for (double target : args.sizes) {
-    if (!(target >= 1000)) throw Error("--sizes", "particle counts must be >= 1000");
     BenchRow row;
     row.target = target;
-    row.dp = kReferenceDp * std::cbrt(n_ref / target);
+    row.dp = dp_for(target);
     Simulation sim(bench_case(row.dp), step_backend(backend));
     sim.step();  // warm-up: sizes every array, first sort
     row.wall_s = timed_steps(sim, args.steps);
@@ -126,7 +141,7 @@ int bench_command(const BenchArgs& args) {
       }
       j["runs"].push_back(run);
     }
-    std::ofstream(args.json_path) << j.dump(2) << "\n";
+    write_file_atomic(args.json_path, j.dump(2) + "\n");
   }
   return 0;
 }

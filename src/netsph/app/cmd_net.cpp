@@ -8,6 +8,7 @@
 
 #include "netsph/app/commands.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/io/output_folder.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
 #include "netsph/net/net_generator.hpp"
 #include "netsph/net/net_output.hpp"
@@ -22,7 +23,7 @@ int net_command(const NetArgs& args) {
   const std::filesystem::path out = args.out_dir.empty()
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);
-  std::filesystem::create_directories(out);
+  create_output_folder(out, "-o");
   const NetEnvironment env = net_environment(spec);
   for (const NetSpec& ns : spec.nets) {
     NetModel net = generate_net(ns, env);

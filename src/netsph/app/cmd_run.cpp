@@ -180,6 +180,14 @@ int run_command(const RunArgs& args) {
     checkpoint = coll ? read_checkpoint_file(file, Simulation::particle_rows(AxisRange::nothing()))
                       : read_checkpoint_file(file);
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
+    const double at = checkpoint.real("sim.time");
+    if (!(spec.simulation.end_time > at)) {
+      throw Error("--restart",
+                  fmt::format("the checkpoint in {} is at t = {:.6g} s, and the case ends at "
+                              "simulation.end_time = {:.6g} s: nothing is left to run; give a "
+                              "later end, e.g. --set simulation.end_time={:.3g}",
+                              args.restart_dir, at, spec.simulation.end_time, 2 * at));
+    }
     if (coll) {
       const AxisRange part = set_up_region(spec, coll->size(), coll->rank());
       checkpoint = read_checkpoint_file(file, Simulation::particle_rows(part));

@@ -7,6 +7,7 @@
 
 #include "netsph/app/commands.hpp"
 #include "netsph/io/atomic_file.hpp"
+#include "netsph/io/output_folder.hpp"
 #include "netsph/validation/validation.hpp"
 
 namespace netsph::app {
@@ -26,13 +27,14 @@ int validate_command(const ValidateArgs& args) {
   o.out_dir = args.out_dir;
   o.progress = !args.quiet;
   o.reuse = args.reuse;
+  // Before any entry runs: an unwritable folder would otherwise fail after hours of runs.
+  create_output_folder(args.out_dir, "-o");
   const ValidationReport report = run_validation(o);
   const std::string table = format_validation_table(report);
   fmt::print("\n{}\n", table);
   spdlog::info("validate: {} entr{} in {:.1f} min; run folders under {}", report.entries_run.size(),
                report.entries_run.size() == 1 ? "y" : "ies", report.wall_s / 60,
                std::filesystem::absolute(args.out_dir).string());
-  std::filesystem::create_directories(args.out_dir);
   write_file_atomic(std::filesystem::path(args.out_dir) / "validation.md", table);
   if (!args.json_path.empty()) {
     write_file_atomic(args.json_path, validation_json(report).dump(2) + "\n");

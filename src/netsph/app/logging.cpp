@@ -1,4 +1,5 @@
 #include "netsph/app/logging.hpp"
+#include "netsph/io/output_folder.hpp"
 
 #include <memory>
 
@@ -18,7 +19,7 @@ void log_to_console(bool quiet) {
 }
 
 void log_also_to_file(const std::filesystem::path& file, bool append) {
-  std::filesystem::create_directories(file.parent_path());
+  create_output_folder(file.parent_path(), "-o");
   auto sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>(file.string(), !append);
   sink->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");
   sink->set_level(spdlog::level::info);

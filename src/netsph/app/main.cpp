@@ -14,9 +14,11 @@ namespace {
 void add_case_options(CLI::App* cmd, netsph::app::CaseChoice& c) {
   cmd->add_option("case", c.path,
                   "case file (TOML), or builtin:<name>; default: the built-in default case");
+  // One value per --set, so that a case after it (`check --set a=1 case.toml`) stays the case.
   cmd->add_option("--set", c.overrides,
                   "override a case key, e.g. --set simulation.dp=0.01 (repeatable; value in TOML "
-                  "syntax)");
+                  "syntax)")
+      ->allow_extra_args(false);
 }
 
 std::vector<double> parse_sizes(const std::string& text) {

@@ -9,6 +9,7 @@
 
 #include "netsph/io/atomic_file.hpp"
 #include "netsph/io/csv_series.hpp"
+#include "netsph/io/output_folder.hpp"
 #include "netsph/net/current_loads.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
 #include "netsph/net/net_generator.hpp"
@@ -49,7 +50,7 @@ bool finite(const NetModel& net) {
 
 NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
-  std::filesystem::create_directories(options.out_dir);
+  create_output_folder(options.out_dir, "output folder");
   NetRunReport report;
   const double end_time = spec.simulation.end_time;
   const double snapshot_every =

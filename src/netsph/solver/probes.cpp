@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "netsph/core/error.hpp"
+#include "netsph/io/output_folder.hpp"
 #include "netsph/solver/run_outputs.hpp"
 
 namespace netsph {
@@ -49,7 +50,7 @@ ProbeRecorder::ProbeRecorder(const Simulation& sim, const std::filesystem::path&
       inflow_(sim.spec().uniform_inflow()) {
   const CaseSpec& spec = sim.spec();
   if (spec.probes.empty()) return;
-  std::filesystem::create_directories(dir_);
+  create_output_folder(dir_, "probes");
   for (const ProbeSpec& ps : spec.probes) {
     auto pr = std::make_unique<Probe>();
     pr->spec = ps;

@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "netsph/core/error.hpp"
+#include "netsph/io/output_folder.hpp"
 
 namespace netsph {
 
@@ -86,7 +87,7 @@ RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool sn
       end_time_(sim.spec().simulation.end_time),
       forces_(sim, window_[0], window_[1]),
       nets_(sim, window_[0], window_[1]),
-      probes_((std::filesystem::create_directories(dir_), sim), dir_, window_[0], window_[1],
+      probes_((create_output_folder(dir_, "output folder"), sim), dir_, window_[0], window_[1],
               resume_time(resume)),
       series_(resume
                   ? CsvSeries(dir_ / "series.csv",
