@@ -513,8 +513,31 @@ FillSpec CaseReader::read_fill(const toml::table& table, int number) const {
                              "below the fluid",
                              format_number(fill.box.min.z)));
   }
+  check_box_fits_lattice(r, fill.box);
   if (spec_.domain.given) check_fill_in_domain(r, fill.box);
   return fill;
+}
+
+void CaseReader::check_box_fits_lattice(const TomlTableReader& r, const BoxSpec& box) const {
+  const double dp = spec_.simulation.dp;
+  if (!(dp > 0)) return;  // a net-only case has no lattice
+  for (const int axis : used_axes()) {
+    const char name = "xyz"[axis];
+    const double len = box.max[axis] - box.min[axis];
+    const double spacings = std::round(len / dp);
+    if (spacings < 1) {
+      r.fail_table(
+          fmt::format("{} is {} m long on {}, less than simulation.dp = {} m: it would "
+                      "hold no particle; use dp <= {} m or a longer box",
+                      r.title(), format_number(len), name, format_number(dp), format_number(len)));
+    }
+    if (spacings > 2147483647.0) {
+      r.fail_table(
+          fmt::format("{} is {:.3g} particle spacings long on {} (simulation.dp = {} "
+                      "m): more than a lattice axis holds (2^31 - 1); use a larger dp",
+                      r.title(), spacings, name, format_number(dp)));
+    }
+  }
 }
 
 void CaseReader::check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const {

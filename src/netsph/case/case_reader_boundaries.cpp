@@ -66,6 +66,7 @@ WallSpec CaseReader::read_wall(const toml::table& table, int number) const {
   wall.name = r.string("name", fmt::format("wall{}", number));
   if (wall.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
   wall.box = read_box(r, "the wall's fluid side");
+  check_box_fits_lattice(r, wall.box);
   wall.faces = read_faces(r);
   // Default: enough layers to cover the kernel support 2h (3 at h = 1.5 dp).
   wall.layers = static_cast<int>(r.integer("layers", IntRule{1, 10}, support_layers()));

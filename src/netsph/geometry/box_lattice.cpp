@@ -14,7 +14,14 @@ std::array<int, 3> lattice_counts(const LatticeBox& box, double dp) {
   for (int a = 0; a < 3; ++a) {
     if (box.dims == 2 && a == 1) continue;
     const double len = box.max[a] - box.min[a];
-    n[a] = static_cast<int>(std::lround(len / dp));
+    const double spacings = std::round(len / dp);
+    // The case reader refuses such boxes with their file and line; this guards other callers.
+    if (!(spacings <= 2147483647.0)) {
+      throw Error("geometry", std::string("box holds more than 2^31 - 1 particle spacings on ") +
+                                  axis_name[a] + " (length " + std::to_string(len) +
+                                  " m): dp is too small");
+    }
+    n[a] = static_cast<int>(spacings);
     if (n[a] < 1) {
       throw Error("geometry", std::string("box is thinner than dp on ") + axis_name[a] +
                                   " (length " + std::to_string(len) + " m)");
