@@ -39,4 +39,7 @@ expect_error "--sizes: particle counts must be >= 1000" \
   { echo "bench ran a size before checking the others"; cat "$tmp/out"; exit 1; }
 expect_error "--json: the folder $tmp/nodir does not exist" \
   "$netsph" -q bench --sizes 2000 --steps 1 --json "$tmp/nodir/bench.json"
+expect_error "--max-steps: must be >= 0" "$netsph" -q run "$case_file" --max-steps -1 -o "$tmp/neg"
+[ ! -d "$tmp/neg" ] || { echo "--max-steps -1 made an output folder"; exit 1; }
+expect_error "--sample-steps: must be >= 1" "$netsph" -q check "$case_file" --sample-steps 0
 echo "ok: command-line mistakes are named before any work"

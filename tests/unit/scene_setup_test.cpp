@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "netsph/geometry/box_bins.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/geometry/shapes.hpp"
+#include "netsph/solver/mach_check.hpp"
 #include "netsph/solver/memory_preflight.hpp"
 #include "netsph/solver/scene.hpp"
 #include "scene_cases.hpp"
@@ -314,6 +316,35 @@ TEST(MemoryPreflight, TheEstimateFromTheBoxesIsTheBuiltCountOrALittleLess) {
     EXPECT_DOUBLE_EQ(e.bytes, 200 * e.particles);
   }
   EXPECT_GT(available_memory().value_or(1), 0);
+}
+
+bool warns_about_c0(const Scene& scene) {
+  return std::any_of(scene.warnings.begin(), scene.warnings.end(), [](const std::string& w) {
+    return w.find("times the fastest flow the case sets up") != std::string::npos;
+  });
+}
+
+TEST(SceneWarnings, ASoundSpeedNearTheFlowSpeedIsNamedWithWhatSetsTheFlow) {
+  // The dam break: 2 m of water, free fall sqrt(2 g H) = 6.26 m/s; its c0 (coef 10: 44 m/s) is
+  // 7 times that, and 10 m/s is 1.6 times.
+  const std::string dam = std::string(NETSPH_CASES_DIR) + "/dambreak2d.toml";
+  EXPECT_FALSE(warns_about_c0(build_scene(read_case_file(dam, {}))));
+  const Scene slow = build_scene(read_case_file(dam, {"fluid.sound_speed=10.0"}));
+  ASSERT_TRUE(warns_about_c0(slow));
+  const ExpectedFlow fall = expected_flow_speed(read_case_file(dam, {}), 2.0);
+  EXPECT_NEAR(fall.speed, std::sqrt(2 * 9.81 * 2.0), 1e-9);
+  // A closed duct without gravity: the inlet sets the flow (0.226 m/s; c0 = 3 m/s is 13 times).
+  const std::string net = std::string(NETSPH_CASES_DIR) + "/net_bi2014.toml";
+  EXPECT_FALSE(warns_about_c0(build_scene(read_case_file(net, {}))));
+  const CaseSpec fast = read_case_file(net, {"inlet.0.velocity=1.0"});
+  const ExpectedFlow inflow = expected_flow_speed(fast, 0.0);
+  EXPECT_DOUBLE_EQ(inflow.speed, 1.0);
+  EXPECT_NE(inflow.source.find("inlet"), std::string::npos) << inflow.source;
+  const auto w = sound_speed_warning(fast, 0.0, 3.0);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_NE(w->find("c0 = 3 m/s is only 3.0 times"), std::string::npos) << *w;
+  EXPECT_NE(w->find("(the velocity of inlet 'inlet1')"), std::string::npos) << *w;
+  EXPECT_NE(w->find("c0 >= 10 U (10 m/s here)"), std::string::npos) << *w;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 namespace netsph::app {
 
 int check_command(const CheckArgs& args) {
+  if (args.sample_steps < 1) throw Error("--sample-steps", "must be >= 1 (default 20)");
   const CaseSpec spec = load_case(args.case_choice);
   const int threads = apply_threads(args.threads);
   spdlog::info("case '{}' from {}: valid", spec.simulation.name, spec.source);

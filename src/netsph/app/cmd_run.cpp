@@ -148,6 +148,7 @@ int report_run(const RunReport& r, const std::filesystem::path& out, bool plots)
 }  // namespace
 
 int run_command(const RunArgs& args) {
+  if (args.max_steps < 0) throw Error("--max-steps", "must be >= 0 (0: no limit)");
   // Under mpirun (more than one process) the run is distributed over the processes
   // (distributed/); netsph touches MPI only then.
   std::optional<MpiSession> mpi;

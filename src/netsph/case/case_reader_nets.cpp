@@ -84,6 +84,7 @@ NetSpec CaseReader::read_net(const toml::table& table, int number) const {
                  "<name>.xdmf, net_<name>_<n>.vtk and knots_<name>.csv)");
   }
   net.center = read_position(r, "center", "position [x, y, z] of the outline's centre, m");
+  check_in_domain(r, "center", net.center);
   read_net_orientation(r, net);
   net.width = r.required_number("width", NumberRule::positive("m"), "outline width, m, > 0");
   net.height = r.required_number("height", NumberRule::positive("m"), "outline height, m, > 0");

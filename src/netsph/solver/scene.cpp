@@ -11,6 +11,7 @@
 #include "netsph/core/periodic_image.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/solver/mach_check.hpp"
 
 namespace netsph {
 namespace {
@@ -191,6 +192,8 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
   }
   scene.sound_speed = sound_speed_of(spec, scene.fluid_depth);
   scene.model = fluid_model_for(spec, scene.sound_speed);
+  if (auto w = sound_speed_warning(spec, scene.fluid_depth, scene.sound_speed))
+    scene.warnings.push_back(std::move(*w));
   const TaitEos& eos = scene.model.eos;
   const double gz = spec.fluid.gravity.z;
 
