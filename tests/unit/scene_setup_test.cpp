@@ -347,5 +347,32 @@ TEST(SceneWarnings, ASoundSpeedNearTheFlowSpeedIsNamedWithWhatSetsTheFlow) {
   EXPECT_NE(w->find("c0 >= 10 U (10 m/s here)"), std::string::npos) << *w;
 }
 
+bool warns(const Scene& scene, const std::string& part) {
+  return std::any_of(scene.warnings.begin(), scene.warnings.end(),
+                     [&](const std::string& w) { return w.find(part) != std::string::npos; });
+}
+
+TEST(SceneWarnings, SurfaceHeightsAndProfilesFarFromTheWaterAreNamed) {
+  // The open channel: water from z = 0 to 0.2 m, an inlet on xmin.
+  const std::string channel = std::string(NETSPH_CASES_DIR) + "/channel2d.toml";
+  const auto scene_with = [&](const std::vector<std::string>& set) {
+    return build_scene(read_case_file(channel, set));
+  };
+  const Scene plain = scene_with({});
+  EXPECT_FALSE(warns(plain, "surface_z"));
+  EXPECT_FALSE(warns(plain, "profile covers"));
+  EXPECT_TRUE(warns(scene_with({"inlet.0.surface_z=5.0"}),
+                    "inlet 'inlet1': surface_z = 5 m lies 4.8 m above the highest water (0.2 m)"));
+  EXPECT_FALSE(warns(scene_with({"inlet.0.surface_z=0.21"}), "surface_z"));  // within 2h
+  EXPECT_TRUE(warns(scene_with({"inlet.0.surface_z=-0.5"}), "lies below the water's bottom"));
+  EXPECT_TRUE(warns(scene_with({"inlet.0.profile={z=[10.0, 11.0], u=[0.0, 0.5]}"}),
+                    "its profile covers z = 10 to 11 m, wholly outside the water (0 to 0.2 m): "
+                    "the whole inflow takes its end value, 0 m/s"));
+  // A fill's head: the dam break's 2 m column under a 100 m surface.
+  const std::string dam = std::string(NETSPH_CASES_DIR) + "/dambreak2d.toml";
+  EXPECT_TRUE(warns(build_scene(read_case_file(dam, {"fill.0.surface_z=100.0"})),
+                    "fill[1].surface_z = 100 m lies 98 m above the highest water (2 m)"));
+}
+
 }  // namespace
 }  // namespace netsph

@@ -166,6 +166,7 @@ CaseSpec CaseReader::read(const std::string& default_name) {
   read_walls();
   read_open_boundaries(true);
   read_open_boundaries(false);
+  check_periodic_open_faces();
   read_bodies();
   read_nets();
   reject_fluid_tables_without_fluid();

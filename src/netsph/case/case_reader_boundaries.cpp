@@ -232,6 +232,24 @@ Face CaseReader::read_open_face(const TomlTableReader& r, std::string_view kind)
   return face;
 }
 
+void CaseReader::check_periodic_open_faces() const {
+  for (std::size_t face = 0; face < 6; ++face) {
+    const std::optional<NamedEntry>& here = open_faces_[face];
+    const int axis = static_cast<int>(face) / 2;
+    if (!here || !spec_.domain.periodic[static_cast<std::size_t>(axis)] || open_faces_[face ^ 1])
+      continue;
+    // The fluid would wrap through the opposite face into the buffer: an inlet then only adds
+    // water, an outlet takes what the period brings back.
+    throw Error(here->where.str(),
+                fmt::format("{} lies on face \"{}\" of the periodic axis {}, and face \"{}\" "
+                            "has no open boundary: the fluid would wrap through it into the "
+                            "buffer. Put an [[inlet]] or [[outlet]] on \"{}\" too (as the "
+                            "paper's flumes do), or take {} out of domain.periodic",
+                            here->label, kFaceNames[face], "xyz"[axis], kFaceNames[face ^ 1],
+                            kFaceNames[face ^ 1], "xyz"[axis]));
+  }
+}
+
 void CaseReader::check_face_free(const TomlTableReader& r, const OpenBoundarySpec& ob,
                                  const std::string& label) {
   std::optional<NamedEntry>& slot = open_faces_[static_cast<std::size_t>(ob.face)];

@@ -116,6 +116,8 @@ class CaseReader {
   void read_open_velocity(const TomlTableReader& r, bool inlet, OpenBoundarySpec& ob) const;
   void read_profile(const TomlTableReader& r, OpenBoundarySpec& ob) const;
   void check_buffer(const TomlTableReader& r, const OpenBoundarySpec& ob);
+  /// An open boundary on a periodic axis needs one on the opposite face too.
+  void check_periodic_open_faces() const;
   void check_face_free(const TomlTableReader& r, const OpenBoundarySpec& ob,
                        const std::string& label);
   /// Names are unique among all walls, inlets, outlets and bodies.

@@ -11,6 +11,7 @@
 #include "netsph/core/periodic_image.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/solver/hydrostatic_check.hpp"
 #include "netsph/solver/mach_check.hpp"
 
 namespace netsph {
@@ -185,15 +186,20 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
   const double dp = spec.simulation.dp;
 
   double top_surface = -std::numeric_limits<double>::infinity();
+  double water_top = top_surface, water_bottom = std::numeric_limits<double>::infinity();
   for (const auto& f : spec.fills) {
     const double s = surface_of(f, dp, dims);
     top_surface = std::max(top_surface, s);
     scene.fluid_depth = std::max(scene.fluid_depth, s - f.box.min.z);
+    water_top = std::max(water_top, lattice_max(lattice_box(f.box, dims), dp).z);
+    water_bottom = std::min(water_bottom, f.box.min.z);
   }
   scene.sound_speed = sound_speed_of(spec, scene.fluid_depth);
   scene.model = fluid_model_for(spec, scene.sound_speed);
   if (auto w = sound_speed_warning(spec, scene.fluid_depth, scene.sound_speed))
     scene.warnings.push_back(std::move(*w));
+  for (std::string& w : hydrostatic_warnings(spec, water_top, water_bottom))
+    scene.warnings.push_back(std::move(w));
   const TaitEos& eos = scene.model.eos;
   const double gz = spec.fluid.gravity.z;
 
