@@ -374,5 +374,22 @@ TEST(SceneWarnings, SurfaceHeightsAndProfilesFarFromTheWaterAreNamed) {
                     "fill[1].surface_z = 100 m lies 98 m above the highest water (2 m)"));
 }
 
+TEST(SceneWarnings, AMovingBodyStartingInsideAWallOrABodyIsNamed) {
+  // The sinking box (0.2 x 0.1 m, floating) over the tank floor at z = 0, dp = 0.02 m.
+  const std::string box = std::string(NETSPH_CASES_DIR) + "/sinking_box2d.toml";
+  const auto scene_at = [&](const char* center) {
+    return build_scene(read_case_file(box, {"simulation.dp=0.02", center}));
+  };
+  EXPECT_FALSE(warns(scene_at("body.0.center=[0.5, 0.0, 0.4]"), "starts inside"));
+  // Resting on the floor (1 mm into it): the layers stay a dp apart.
+  EXPECT_FALSE(warns(scene_at("body.0.center=[0.5, 0.0, 0.049]"), "starts inside"));
+  // Half its height into the floor: its lowest layer sits on the wall's first.
+  EXPECT_TRUE(
+      warns(scene_at("body.0.center=[0.5, 0.0, 0.0]"), "body 'box' starts inside wall 'tank'"));
+  // Fixed bodies may cross each other (the panel's twines) and touch walls.
+  const std::string panel = std::string(NETSPH_CASES_DIR) + "/paper/panel5_twines_reduced.toml";
+  EXPECT_FALSE(warns(build_scene(read_case_file(panel, {})), "starts inside"));
+}
+
 }  // namespace
 }  // namespace netsph

@@ -13,6 +13,7 @@
 #include "netsph/neighbors/cell_grid.hpp"
 #include "netsph/solver/hydrostatic_check.hpp"
 #include "netsph/solver/mach_check.hpp"
+#include "netsph/solver/solid_overlaps.hpp"
 
 namespace netsph {
 namespace {
@@ -291,6 +292,17 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
   const std::size_t fluid_outside_bodies = fluid_in_region();
   scene.removed_in_bodies = fluid_generated - fluid_outside_bodies;
   wrap_body_particles(spec, p);
+  if (!scene.bodies.empty()) {
+    std::vector<std::string> wall_names, body_names;
+    std::vector<bool> body_moves;
+    for (const auto& w : spec.walls) wall_names.push_back(w.name);
+    for (const auto& b : scene.bodies) {
+      body_names.push_back(b.name);
+      body_moves.push_back(b.motion != BodyMotion::Fixed);
+    }
+    for (std::string& w : solid_overlap_warnings(p, dp, dims, wall_names, body_names, body_moves))
+      scene.warnings.push_back(std::move(w));
+  }
 
   // Bounding box of the particles, for the default domain and the overlap search (of the
   // part near the region; the particles past it are the whole scene's too, so the
