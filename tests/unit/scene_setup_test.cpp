@@ -391,5 +391,23 @@ TEST(SceneWarnings, AMovingBodyStartingInsideAWallOrABodyIsNamed) {
   EXPECT_FALSE(warns(build_scene(read_case_file(panel, {})), "starts inside"));
 }
 
+TEST(SceneWarnings, AWallClosingAPeriodicAxisAcrossTheWaterIsNamed) {
+  // The dam break's tank made periodic along x: its end walls stop every crossing.
+  const std::string dam = std::string(NETSPH_CASES_DIR) + "/dambreak2d.toml";
+  const std::string periodic_x =
+      "domain={min=[-0.2, 0, -0.2], max=[4.2, 0, 3.2], periodic=[\"x\"]}";
+  EXPECT_TRUE(warns(build_scene(read_case_file(dam, {"simulation.dp=0.04", periodic_x})),
+                    "wall 'tank' closes the periodic axis x with its faces xmin and xmax"));
+  // Without the end faces the tank is a periodic channel.
+  EXPECT_FALSE(warns(build_scene(read_case_file(
+                         dam, {"simulation.dp=0.04", periodic_x, "wall.0.faces=[\"zmin\"]"})),
+                     "closes the periodic axis"));
+  // A block on the bed across part of the water is an obstacle (periodic Poiseuille has
+  // walls along the axis only; the shipped channels none across it).
+  EXPECT_FALSE(warns(build_scene(read_case_file(
+                         dam, {"simulation.dp=0.04", periodic_x, "wall.0.max=[4.0, 0.0, 1.0]"})),
+                     "closes the periodic axis"));
+}
+
 }  // namespace
 }  // namespace netsph

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -135,6 +137,44 @@ std::size_t remove_overlaps(ParticleSet& p, double dp, const Vec3d& lo, const Ve
   return removed;
 }
 
+/// A wall face across a periodic axis that spans the water's whole cross-section (the fills'
+/// extent on the other axes): no water can cross the period there, which a periodic axis is
+/// for (a tank's end walls left in after making its axis periodic). A wall across part of it
+/// is an obstacle, and fine.
+std::optional<std::string> periodic_barrier(const CaseSpec& spec, const WallSpec& w) {
+  const DomainSpec& d = spec.domain;
+  if (!d.given || spec.fills.empty()) return std::nullopt;
+  const double dp = spec.simulation.dp;
+  Vec3d lo = spec.fills[0].box.min, hi = spec.fills[0].box.max;
+  for (const FillSpec& f : spec.fills) {
+    for (int a = 0; a < 3; ++a)
+      lo[a] = std::min(lo[a], f.box.min[a]), hi[a] = std::max(hi[a], f.box.max[a]);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!d.periodic[static_cast<std::size_t>(axis)]) continue;
+    const int face = 2 * axis;
+    if (!w.faces[static_cast<std::size_t>(face)] && !w.faces[static_cast<std::size_t>(face + 1)])
+      continue;
+    bool spans = true;
+    for (int b = 0; b < 3; ++b) {
+      if (b == axis || (spec.simulation.dimensions == 2 && b == 1)) continue;
+      spans &= w.box.min[b] <= lo[b] + dp && w.box.max[b] >= hi[b] - dp;
+    }
+    if (!spans) continue;
+    const char name = "xyz"[axis];
+    return fmt::format(
+        "wall '{}' closes the periodic axis {} with its face{} across all the water: none "
+        "crosses the period there. Take the {}min/{}max faces out of the wall, or {} out of "
+        "domain.periodic",
+        w.name, name,
+        w.faces[static_cast<std::size_t>(face)] && w.faces[static_cast<std::size_t>(face + 1)]
+            ? fmt::format("s {0}min and {0}max", name)
+            : fmt::format(" {}{}", name, w.faces[static_cast<std::size_t>(face)] ? "min" : "max"),
+        name, name, name);
+  }
+  return std::nullopt;
+}
+
 OpenBoundaryZone make_zone(const OpenBoundarySpec& o, bool inlet, const CaseSpec& spec,
                            double default_surface) {
   OpenBoundaryZone z;
@@ -214,6 +254,7 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
           "default) or laminar viscosity",
           w.name));
     }
+    if (auto barrier = periodic_barrier(spec, w)) scene.warnings.push_back(std::move(*barrier));
   }
   if (spec.fluid.background_pressure > 0 && norm2(spec.fluid.gravity) > 0) {
     scene.warnings.push_back(fmt::format(
