@@ -159,6 +159,7 @@ CaseSpec CaseReader::read(const std::string& default_name) {
   spec_.source = source_.name();
   check_top_level();
   read_simulation(default_name);
+  reject_nets_in_2d();
   read_fluid();
   read_domain();
   read_fills();

@@ -293,9 +293,10 @@ void CaseReader::check_buffer(const TomlTableReader& r, const OpenBoundarySpec& 
   open_widths_[static_cast<std::size_t>(ob.face)] = width;
   if (width < extent) return;
   const std::string message = fmt::format(
-      "the buffer (layers * dp = {} m) must be narrower than the domain along {}, which is {} m "
-      "from [domain] min to max",
-      format_derived(width), "xyz"[axis], format_derived(extent));
+      "the buffer ({} layers x simulation.dp = {} m: {} m) must be narrower than the domain "
+      "along {}, which is {} m from [domain] min to max; use a smaller dp or fewer layers",
+      ob.layers, format_number(spec_.simulation.dp), format_derived(width), "xyz"[axis],
+      format_derived(extent));
   if (layers) r.fail_value("layers", *layers, message);
   r.fail_value("face", *r.find("face"), message);
 }

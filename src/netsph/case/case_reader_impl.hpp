@@ -147,6 +147,9 @@ class CaseReader {
   void register_body_name(const toml::table& table, const BodySpec& body, int number);
 
   // case_reader_nets.cpp
+  /// Before the other tables: a 2D case with a net fails on the net, not on what 3D keys the
+  /// rest of it has (a wall's y faces).
+  void reject_nets_in_2d() const;
   void read_nets();
   NetSpec read_net(const toml::table& table, int number) const;
   void read_net_orientation(const TomlTableReader& r, NetSpec& net) const;

@@ -52,6 +52,14 @@ constexpr std::array<Material, 4> kMaterials = {{{"nylon", 1140, 1.2e9},
 
 // ---- [[net]] ------------------------------------------------------------------------------
 
+void CaseReader::reject_nets_in_2d() const {
+  if (!is_2d()) return;
+  const std::vector<const toml::table*> tables = find_array_of_tables("net");
+  if (tables.empty()) return;
+  TomlTableReader r(*tables[0], "net[1]", "net[1]", keys_of("net"), source_, home_hint);
+  r.fail_table("nets need simulation.dimensions = 3 (a net is a surface of knots and twines)");
+}
+
 void CaseReader::read_nets() {
   const std::vector<const toml::table*> tables = find_array_of_tables("net");
   for (std::size_t i = 0; i < tables.size(); ++i) {
@@ -74,9 +82,6 @@ NetSpec CaseReader::read_net(const toml::table& table, int number) const {
   TomlTableReader r(table, label, label, keys_of("net"), source_, home_hint);
   NetSpec net;
   net.where = r.location();
-  if (is_2d()) {
-    r.fail_table("nets need simulation.dimensions = 3 (a net is a surface of knots and twines)");
-  }
   net.name = r.string("name", fmt::format("net{}", number));
   if (!plain_file_name(net.name)) {
     r.fail_value("name", *r.find("name"),
