@@ -45,6 +45,12 @@ void expect_same(const ParticleTally& a, const ParticleTally& b) {
   EXPECT_EQ(a.max_density, b.max_density);
 }
 
+void expect_extremes(const ParticleTally& t, double max_speed2, double min_rho, double max_rho) {
+  EXPECT_EQ(t.max_speed2, max_speed2);
+  EXPECT_EQ(t.min_density, min_rho);
+  EXPECT_EQ(t.max_density, max_rho);
+}
+
 TEST(ParticleTally, CountsKindsAndMeasuresTheFluidOnly) {
   ParticleSet p;
   add(p, ParticleKind::Fluid, {3, 0, 4}, 1010);  // |v| = 5
@@ -59,9 +65,7 @@ TEST(ParticleTally, CountsKindsAndMeasuresTheFluidOnly) {
   EXPECT_EQ(t.walls, 2u);
   EXPECT_EQ(t.buffer, 1u);
   EXPECT_DOUBLE_EQ(t.kinetic_energy, 0.5 * mass * (25 + 1));
-  EXPECT_EQ(t.max_speed2, 25.0);
-  EXPECT_EQ(t.min_density, 990.0);
-  EXPECT_EQ(t.max_density, 1010.0);
+  expect_extremes(t, 25.0, 990.0, 1010.0);
   expect_same(reduced_on_host_exec(p, mass), t);
 
   const GlobalMeasures g = measures_of(t, mass);
@@ -73,9 +77,7 @@ TEST(ParticleTally, CountsKindsAndMeasuresTheFluidOnly) {
   const ParticleTally own = tally_particles(p, mass, keep);
   EXPECT_EQ(own.fluid, 1u);
   EXPECT_EQ(own.walls, 1u);
-  EXPECT_EQ(own.max_speed2, 1.0);
-  EXPECT_EQ(own.min_density, 990.0);
-  EXPECT_EQ(own.max_density, 990.0);
+  expect_extremes(own, 1.0, 990.0, 990.0);
 }
 
 TEST(ParticleTally, ANaNParticleShowsInTheEnergyAndIsPassedOverByTheExtremes) {
@@ -86,18 +88,13 @@ TEST(ParticleTally, ANaNParticleShowsInTheEnergyAndIsPassedOverByTheExtremes) {
   for (const ParticleTally& t : {tally_particles(p, 1.0), reduced_on_host_exec(p, 1.0)}) {
     EXPECT_EQ(t.fluid, 3u);
     EXPECT_TRUE(std::isnan(t.kinetic_energy));  // what the finite-state check then reports
-    EXPECT_EQ(t.max_speed2, 4.0);
-    EXPECT_EQ(t.min_density, 1000.0);
-    EXPECT_EQ(t.max_density, 1005.0);
+    expect_extremes(t, 4.0, 1000.0, 1005.0);
   }
   // A NaN on either side of a merge is passed over (a reduction tree puts it anywhere).
   const ParticleTally nan_one = tally_particle(ParticleKind::Fluid, {kNaN, 0, 0}, kNaN, 1.0);
   const ParticleTally fine = tally_particle(ParticleKind::Fluid, {0, 3, 0}, 998, 1.0);
-  for (const ParticleTally& m : {merge_tallies(nan_one, fine), merge_tallies(fine, nan_one)}) {
-    EXPECT_EQ(m.max_speed2, 9.0);
-    EXPECT_EQ(m.min_density, 998.0);
-    EXPECT_EQ(m.max_density, 998.0);
-  }
+  for (const ParticleTally& m : {merge_tallies(nan_one, fine), merge_tallies(fine, nan_one)})
+    expect_extremes(m, 9.0, 998.0, 998.0);
 }
 
 TEST(ParticleTally, WithoutFluidTheDensitiesAreZero) {
