@@ -104,6 +104,21 @@ TEST(Instability, DtMinAboveTheFirstTimeStepIsTheCasesMistake) {
   }
 }
 
+TEST(Instability, ARestartTakesTheDtMinItIsGiven) {
+  // The floor of a restart is the case's dt_min when it gives one (a restart may change it),
+  // not the checkpoint's 1e-4 of the first step.
+  Simulation first(test::load_case("dambreak2d.toml"));
+  for (int i = 0; i < 3; ++i) first.step();
+  CheckpointData saved;
+  first.save_state(saved);
+  Simulation resumed(test::load_case("dambreak2d.toml", {"simulation.dt_min=0.01"}));
+  resumed.restore_state(saved);
+  EXPECT_THROW(resumed.step(), SimulationUnstable);
+  Simulation unchanged(test::load_case("dambreak2d.toml"));
+  unchanged.restore_state(saved);
+  EXPECT_NO_THROW(unchanged.step());
+}
+
 TEST(Instability, FluidLeavingTheDomainStopsWithWhereItWent) {
   // Gravity upwards and a lid-less domain 0.2 m above the water: the column lifts out of
   // the top. Checkpoints every 0.005 s: the last good one must survive the failure.

@@ -20,6 +20,7 @@
 #include "netsph/geometry/shapes.hpp"
 #include "netsph/solver/mach_check.hpp"
 #include "netsph/solver/memory_preflight.hpp"
+#include "netsph/solver/net_coupling.hpp"
 #include "netsph/solver/scene.hpp"
 #include "scene_cases.hpp"
 
@@ -365,6 +366,13 @@ TEST(SceneWarnings, SurfaceHeightsAndProfilesFarFromTheWaterAreNamed) {
                     "inlet 'inlet1': surface_z = 5 m lies 4.8 m above the highest water (0.2 m)"));
   EXPECT_FALSE(warns(scene_with({"inlet.0.surface_z=0.21"}), "surface_z"));  // within 2h
   EXPECT_TRUE(warns(scene_with({"inlet.0.surface_z=-0.5"}), "lies below the water's bottom"));
+  // Without hydrostatic density a buffer's surface sets no head; an outlet creates nothing.
+  EXPECT_FALSE(warns(scene_with({"inlet.0.density=\"extrapolated\"", "inlet.0.surface_z=0.35"}),
+                     "surface_z"));
+  EXPECT_FALSE(warns(scene_with({"outlet.0.density=\"extrapolated\"", "outlet.0.surface_z=1.0"}),
+                     "surface_z"));
+  EXPECT_FALSE(warns(scene_with({"outlet.0.density=\"reference\"", "outlet.0.surface_z=-0.5"}),
+                     "surface_z"));
   EXPECT_TRUE(warns(scene_with({"inlet.0.profile={z=[10.0, 11.0], u=[0.0, 0.5]}"}),
                     "its profile covers z = 10 to 11 m, wholly outside the water (0 to 0.2 m): "
                     "the whole inflow takes its end value, 0 m/s"));
@@ -386,6 +394,23 @@ TEST(SceneWarnings, AMovingBodyStartingInsideAWallOrABodyIsNamed) {
   // Half its height into the floor: its lowest layer sits on the wall's first.
   EXPECT_TRUE(
       warns(scene_at("body.0.center=[0.5, 0.0, 0.0]"), "body 'box' starts inside wall 'tank'"));
+  // Two nets on each other (3D): each floating knot of one sits in the other's.
+  const std::string knot = std::string(NETSPH_CASES_DIR) + "/net_tethered_knot.toml";
+  const std::vector<std::string> twin = {"net.1.name=\"twin\"",
+                                         "net.1.center=[0.0, 0.0, 0.0]",
+                                         "net.1.normal=[0.9239, 0.0, -0.3827]",
+                                         "net.1.up=[0.3827, 0.0, 0.9239]",
+                                         "net.1.width=0.1",
+                                         "net.1.height=0.2",
+                                         "net.1.twine_length=0.1",
+                                         "net.1.twine_diameter=0.02",
+                                         "net.1.knot_layout=\"inset\"",
+                                         "net.1.equivalent_knot=\"full\"",
+                                         "net.1.material=\"nylon\"",
+                                         "net.1.fixed_edges=[\"top\"]"};
+  EXPECT_FALSE(warns(build_scene(spec_with_net_knots(read_case_file(knot, {}))), "starts inside"));
+  EXPECT_TRUE(warns(build_scene(spec_with_net_knots(read_case_file(knot, twin))),
+                    "body 'tether.knot0_0' starts inside body 'twin.knot0_0'"));
   // Fixed bodies may cross each other (the panel's twines) and touch walls.
   const std::string panel = std::string(NETSPH_CASES_DIR) + "/paper/panel5_twines_reduced.toml";
   EXPECT_FALSE(warns(build_scene(read_case_file(panel, {})), "starts inside"));

@@ -91,6 +91,8 @@ int bench_command(const BenchArgs& args) {
     const std::filesystem::path folder = std::filesystem::absolute(args.json_path).parent_path();
     if (!std::filesystem::is_directory(folder))
       throw Error("--json", "the folder " + folder.string() + " does not exist");
+    if (std::filesystem::is_directory(args.json_path))
+      throw Error("--json", args.json_path + " is a folder; give a file name");
   }
   spdlog::info(
       "bench: 3D dam break (cases/dambreak3d.toml), backend {}, {} threads, {} steps "

@@ -18,6 +18,7 @@
 #include "netsph/distributed/mpi_collectives.hpp"
 #include "netsph/distributed/scene_parts.hpp"
 #include "netsph/io/checkpoint_file.hpp"
+#include "netsph/io/output_folder.hpp"
 #include "netsph/net/standalone_net_run.hpp"
 #include "netsph/solver/runner.hpp"
 
@@ -182,7 +183,7 @@ int run_command(const RunArgs& args) {
                       : read_checkpoint_file(file);
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
     const double at = checkpoint.real("sim.time");
-    if (!(spec.simulation.end_time > at)) {
+    if (run_has_ended(at, spec.simulation.end_time)) {
       throw Error("--restart",
                   fmt::format("the checkpoint in {} is at t = {:.6g} s, and the case ends at "
                               "simulation.end_time = {:.6g} s: nothing is left to run; give a "
@@ -206,10 +207,8 @@ int run_command(const RunArgs& args) {
                                     : args.out_dir.empty()
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);
-  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) {
-    throw Error(restart ? "--restart" : "-o",
-                out.string() + " is a file, not a folder: give a folder for the outputs");
-  }
+  // Every process alike, so that all stop together when the folder cannot be made.
+  create_output_folder(out, restart ? "--restart" : args.out_dir.empty() ? "output folder" : "-o");
   if (reporting) log_also_to_file(out / "log.txt", restart);
 
   spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,

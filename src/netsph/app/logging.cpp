@@ -1,5 +1,4 @@
 #include "netsph/app/logging.hpp"
-#include "netsph/io/output_folder.hpp"
 
 #include <memory>
 
@@ -19,7 +18,6 @@ void log_to_console(bool quiet) {
 }
 
 void log_also_to_file(const std::filesystem::path& file, bool append) {
-  create_output_folder(file.parent_path(), "-o");
   auto sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>(file.string(), !append);
   sink->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");
   sink->set_level(spdlog::level::info);

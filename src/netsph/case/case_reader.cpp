@@ -265,9 +265,12 @@ void CaseReader::read_simulation(const std::string& default_name) {
   s.name = r.string("name", default_name);
   if (r.has("name") && s.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
   // The name is the default output folder (out/<name>): a path in it would write elsewhere.
-  if (r.has("name") && !plain_file_name(s.name)) {
+  // Other characters (spaces, brackets) make odd folder names but stay inside out/.
+  const bool escapes =
+      s.name == "." || s.name == ".." || s.name.find_first_of("/\\:") != std::string::npos;
+  if (r.has("name") && escapes) {
     r.fail_value("name", *r.find("name"),
-                 "must be a plain file name: letters, digits, '_', '-' and '.' (the run writes "
+                 "must not be a path: no '/', '\\' or ':', and not '.' or '..' (the run writes "
                  "to out/<name> unless -o names a folder)");
   }
   s.dimensions = static_cast<int>(r.integer("dimensions", IntRule{2, 3}, 3));
@@ -520,6 +523,9 @@ FillSpec CaseReader::read_fill(const toml::table& table, int number) const {
   return fill;
 }
 
+// A lattice axis is counted in int; a wall adds up to 10 layers on each side.
+constexpr double kMaxLatticeSpacings = 2147483647.0 - 20;
+
 void CaseReader::check_box_fits_lattice(const TomlTableReader& r, const BoxSpec& box) const {
   const double dp = spec_.simulation.dp;
   if (!(dp > 0)) return;  // a net-only case has no lattice
@@ -528,15 +534,15 @@ void CaseReader::check_box_fits_lattice(const TomlTableReader& r, const BoxSpec&
     const double len = box.max[axis] - box.min[axis];
     const double spacings = std::round(len / dp);
     if (spacings < 1) {
-      r.fail_table(
-          fmt::format("{} is {} m long on {}, less than simulation.dp = {} m: it would "
-                      "hold no particle; use dp <= {} m or a longer box",
-                      r.title(), format_number(len), name, format_number(dp), format_number(len)));
+      r.fail_table(fmt::format(
+          "{} is {} m long on {}, less than half of simulation.dp = {} m: it rounds to no "
+          "particle; use dp <= {} m or a longer box",
+          r.title(), format_number(len), name, format_number(dp), format_number(2 * len)));
     }
-    if (spacings > 2147483647.0) {
+    if (spacings > kMaxLatticeSpacings) {
       r.fail_table(
           fmt::format("{} is {:.3g} particle spacings long on {} (simulation.dp = {} "
-                      "m): more than a lattice axis holds (2^31 - 1); use a larger dp",
+                      "m): more than a lattice axis holds (2^31 - 21); use a larger dp",
                       r.title(), spacings, name, format_number(dp)));
     }
   }

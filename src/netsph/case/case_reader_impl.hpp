@@ -88,7 +88,7 @@ class CaseReader {
   void read_fills();
   FillSpec read_fill(const toml::table& table, int number) const;
   void check_fill_in_domain(const TomlTableReader& r, const BoxSpec& box) const;
-  /// A fill's or wall's box holds at least one and at most 2^31 - 1 lattice spacings
+  /// A fill's or wall's box holds at least one and at most 2^31 - 21 lattice spacings
   /// (simulation.dp) on every axis.
   void check_box_fits_lattice(const TomlTableReader& r, const BoxSpec& box) const;
   void read_output();

@@ -11,6 +11,7 @@
 #include "netsph/core/error.hpp"
 #include "netsph/io/atomic_file.hpp"
 #include "netsph/io/hdf5_handle.hpp"
+#include "netsph/io/output_folder.hpp"
 
 namespace netsph {
 namespace {
@@ -180,14 +181,13 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path dir, std::string base, bool
     : dir_(std::move(dir)), base_(std::move(base)) {
   check_base_name(base_, dir_);
   const fs::path snapshots = dir_ / "snapshots";
-  std::error_code ec;
-  fs::create_directories(snapshots, ec);
-  if (ec) throw Error(snapshots.string(), "cannot create the folder: " + ec.message());
+  create_output_folder(snapshots, "snapshots");
   // A new run into the same folder replaces the previous run's snapshots: stale files with
   // higher numbers would otherwise sit next to the new ones and mislead anyone globbing them.
   // (A restart keeps them: resume() sorts out which.)
   if (resume) return;
   const std::string prefix = base_ + "_";
+  std::error_code ec;  // a stale file that cannot be listed or removed is left
   for (const auto& entry : fs::directory_iterator(snapshots, ec)) {
     const std::string name = entry.path().filename().string();
     if (entry.is_regular_file() && name.starts_with(prefix) && name.ends_with(".h5")) {

@@ -19,8 +19,8 @@ std::vector<std::string> hydrostatic_warnings(const CaseSpec& spec, double water
     if (!(g > 0) || !(above > margin)) return;
     out.push_back(fmt::format(
         "{} = {:.4g} m lies {:.3g} m above the highest water ({:.4g} m): the water "
-        "starts under that head ({:.3g} kPa) with nothing above to hold it, and springs up. "
-        "Leave surface_z out for a free surface at the water's top",
+        "starts under that head ({:.3g} kPa) and, unless a lid holds it, springs up. Leave "
+        "surface_z out for a free surface at the water's top",
         what, surface, above, water_top, spec.fluid.density * g * above / 1e3));
   };
   for (std::size_t i = 0; i < spec.fills.size(); ++i) {
@@ -29,14 +29,15 @@ std::vector<std::string> hydrostatic_warnings(const CaseSpec& spec, double water
   }
   const auto open = [&](const OpenBoundarySpec& o, const char* kind) {
     const std::string what = fmt::format("{} '{}'", kind, o.name);
-    if (o.surface_z) {
+    // The head matters only where the buffer's density is hydrostatic; an inlet also creates
+    // no particle above its surface, whatever its density.
+    if (o.surface_z && o.density == BufferDensity::Hydrostatic)
       head(what + ": surface_z", *o.surface_z);
-      if (*o.surface_z < water_bottom) {
-        out.push_back(fmt::format(
-            "{}: surface_z = {:.4g} m lies below the water's bottom ({:.4g} m): its buffer holds "
-            "no water and {} no particle",
-            what, *o.surface_z, water_bottom, std::string(kind) == "inlet" ? "creates" : "takes"));
-      }
+    if (o.surface_z && std::string(kind) == "inlet" && *o.surface_z < water_bottom) {
+      out.push_back(fmt::format(
+          "{}: surface_z = {:.4g} m lies below the water's bottom ({:.4g} m): the inlet creates "
+          "no particle above its surface, so none at all",
+          what, *o.surface_z, water_bottom));
     }
     if (!o.profile_z.empty()) {
       const auto [lo, hi] = std::minmax_element(o.profile_z.begin(), o.profile_z.end());

@@ -23,6 +23,10 @@ ExpectedFlow expected_flow_speed(const CaseSpec& spec, double depth) {
     for (const double u : in.profile_u)
       consider(std::fabs(u), fmt::format("the profile of inlet '{}'", in.name));
   }
+  for (const OpenBoundarySpec& out : spec.outlets) {
+    if (out.velocity)
+      consider(std::fabs(*out.velocity), fmt::format("the velocity of outlet '{}'", out.name));
+  }
   for (const BodySpec& b : spec.bodies) {
     for (const Vec3d& v : b.velocity.velocities)
       consider(norm(v), fmt::format("the velocity of body '{}'", b.name));

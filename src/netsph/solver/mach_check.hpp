@@ -13,7 +13,7 @@
 namespace netsph {
 
 /// The fastest flow the case sets up (m/s) and what sets it: the fills', moving walls',
-/// inlets' and prescribed bodies' speeds, and the free-fall speed sqrt(2 |g| H) over the
+/// inlets', imposed outlets' and bodies' speeds, and the free-fall speed sqrt(2 |g| H) over the
 /// deepest fill, H = `depth`.
 struct ExpectedFlow {
   double speed = 0;

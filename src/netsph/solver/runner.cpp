@@ -208,7 +208,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   std::vector<char> warned_at_bar(view ? view->nets().size() : 0, 0);
   if (!opt.resume) write_outputs([&](OutputParticles& p) { outputs->maybe_write(*view, p, 0.0); });
   try {
-    while (stepper.time() < end * (1 - 1e-12)) {
+    while (!run_has_ended(stepper.time(), end)) {
       if (opt.max_steps > 0 && stepper.steps() >= opt.max_steps) {
         r.status = "step limit";
         break;
@@ -222,7 +222,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
       particle_steps += static_cast<double>(stepper.particle_count());
       stepper.step();
       const bool checkpoint_due =
-          stepper.time() >= next_checkpoint * (1 - 1e-12) && stepper.time() < end * (1 - 1e-12);
+          stepper.time() >= next_checkpoint * (1 - 1e-12) && !run_has_ended(stepper.time(), end);
       stepper.refresh_view();
       write_outputs([&](OutputParticles& p) {
         outputs->after_step(*view, p);

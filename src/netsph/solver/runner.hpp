@@ -61,6 +61,12 @@ RunReport run_simulation(Simulation& sim, const RunOptions& options);
 /// report without summary.
 RunReport run_stepped(RunStepper& stepper, const RunOptions& options);
 
+/// Whether a run at time t has reached end_time (within the round-off of the summed steps):
+/// the run loop's test, and a restart's.
+inline bool run_has_ended(double t, double end_time) {
+  return !(t < end_time * (1 - 1e-12));
+}
+
 /// Async-signal-safe: asks a running simulation to stop after the current step.
 void request_stop();
 bool stop_requested();

@@ -339,7 +339,7 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
     for (const auto& w : spec.walls) wall_names.push_back(w.name);
     for (const auto& b : scene.bodies) {
       body_names.push_back(b.name);
-      body_moves.push_back(b.motion != BodyMotion::Fixed);
+      body_moves.push_back(b.motion == BodyMotion::Floating);
     }
     for (std::string& w : solid_overlap_warnings(p, dp, dims, wall_names, body_names, body_moves))
       scene.warnings.push_back(std::move(w));

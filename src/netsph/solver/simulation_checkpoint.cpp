@@ -166,6 +166,9 @@ void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
   time_ = c.real("sim.time");
   steps_ = static_cast<std::int64_t>(c.real("sim.steps"));
   dt_floor_ = c.real("sim.dt_floor");
+  // A dt_min given now (a restart may change it with --set) replaces the checkpoint's floor;
+  // without one the floor stays 1e-4 of the run's first step.
+  if (spec_.simulation.dt_min > 0) dt_floor_ = spec_.simulation.dt_min;
   const std::vector<double>& d = c.reals("diag");
   if (d.size() != 12) fail("diagnostics of another version");
   diag_.dt_limits = {d[0], d[1], d[2], d[3]};

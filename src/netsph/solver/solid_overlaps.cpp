@@ -32,31 +32,37 @@ std::vector<std::string> solid_overlap_warnings(const ParticleSet& p, double dp,
                                                 const std::vector<std::string>& body_names,
                                                 const std::vector<bool>& body_moves) {
   std::vector<std::string> out;
-  // Only walls near a body can overlap one: the bodies' box, a cell wider on each side.
-  const double inf = std::numeric_limits<double>::infinity();
-  Vec3d lo{inf, inf, inf}, hi{-inf, -inf, -inf};
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != ParticleKind::Body) continue;
-    for (int a = 0; a < 3; ++a)
-      lo[a] = std::min(lo[a], p.pos[i][a]), hi[a] = std::max(hi[a], p.pos[i][a]);
-  }
-  if (!(lo.x <= hi.x)) return out;  // no body
-  const auto near_bodies = [&](const Vec3d& x) {
-    for (int a = 0; a < 3; ++a)
-      if (x[a] < lo[a] - dp || x[a] > hi[a] + dp) return false;
-    return true;
-  };
   const auto key_of = [&](const Vec3d& x) {
     return CellKey{static_cast<std::int64_t>(std::floor(x.x / dp)),
                    dims == 2 ? 0 : static_cast<std::int64_t>(std::floor(x.y / dp)),
                    static_cast<std::int64_t>(std::floor(x.z / dp))};
   };
-  std::vector<std::pair<CellKey, std::uint32_t>> cells;
+  // Only walls in a cell next to a moving body's can overlap one: those cells, sorted (a few
+  // times the bodies' particles; a set of boxes would take in every wall between two bodies
+  // far apart, or across a period for a body cut by a periodic face).
+  std::vector<CellKey> near;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool solid = p.kind[i] == ParticleKind::Body ||
-                       (p.kind[i] == ParticleKind::Wall && near_bodies(p.pos[i]));
-    if (solid) cells.emplace_back(key_of(p.pos[i]), static_cast<std::uint32_t>(i));
+    if (p.kind[i] != ParticleKind::Body || !body_moves.at(p.group[i])) continue;
+    const CellKey k = key_of(p.pos[i]);
+    for (std::int64_t dz = -1; dz <= 1; ++dz)
+      for (std::int64_t dy = dims == 2 ? 0 : -1; dy <= (dims == 2 ? 0 : 1); ++dy)
+        for (std::int64_t dx = -1; dx <= 1; ++dx) near.push_back({k.x + dx, k.y + dy, k.z + dz});
   }
+  if (near.empty()) return out;
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  const auto n = static_cast<std::int64_t>(p.size());
+  std::vector<char> take(p.size(), 0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto k = p.kind[static_cast<std::size_t>(i)];
+    if (k == ParticleKind::Body || k == ParticleKind::Wall)
+      take[static_cast<std::size_t>(i)] =
+          std::binary_search(near.begin(), near.end(), key_of(p.pos[static_cast<std::size_t>(i)]));
+  }
+  std::vector<std::pair<CellKey, std::uint32_t>> cells;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (take[i]) cells.emplace_back(key_of(p.pos[i]), static_cast<std::uint32_t>(i));
   std::sort(cells.begin(), cells.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   // For each body: its particles that overlap, by the solid they overlap (walls as ~g).
@@ -87,23 +93,25 @@ std::vector<std::string> solid_overlap_warnings(const ParticleSet& p, double dp,
   std::size_t listed = 0;
   for (const auto& [body, by_other] : hits) {
     if (listed == kMaxListedOverlaps) {
-      out.push_back(fmt::format("... and {} more bodies overlap a wall or another body",
-                                hits.size() - listed));
+      const std::size_t more = hits.size() - listed;
+      out.push_back(fmt::format("... and {} more {} a wall or another body", more,
+                                more == 1 ? "body overlaps" : "bodies overlap"));
       break;
     }
     const auto worst =
         std::max_element(by_other.begin(), by_other.end(),
                          [](const auto& a, const auto& b) { return a.second < b.second; });
     std::size_t total = 0;
-    for (const auto& [o, n] : by_other) total += n;
+    for (const auto& [o, count] : by_other) total += count;
     const std::string what =
         worst->first < 0
             ? fmt::format("wall '{}'", wall_names.at(static_cast<std::size_t>(-1 - worst->first)))
             : fmt::format("body '{}'", body_names.at(static_cast<std::size_t>(worst->first)));
     out.push_back(fmt::format(
-        "body '{}' starts inside {} ({} of its {} particles within dp/2 of its): set-up keeps "
-        "a body where it is placed, so it will be held there or thrown out; move it clear",
-        body_names.at(body), what, total, sizes[body]));
+        "body '{}' starts inside {}: {} of its {} particles lie within dp/2 of that {}'s. Set-up "
+        "keeps a body where it is placed, so it will be held there or thrown out: move it clear "
+        "(a body thinner than 2 dp is resolved 2 dp thick about its centre)",
+        body_names.at(body), what, total, sizes[body], worst->first < 0 ? "wall" : "body"));
     ++listed;
   }
   return out;

@@ -11,12 +11,13 @@
 
 namespace netsph {
 
-/// Warnings for the moving bodies (floating, prescribed, nets' knots) with particles within
-/// dp/2 of a wall's particle or of another body's: one per body, naming the solid it overlaps
-/// most and how many of its particles do (at most kMaxListedOverlaps bodies named, then a
-/// count of the others). Fixed bodies may overlap walls and each other: a panel's crossing
-/// twines do, and neither moves. `wall_names[g]`, `body_names[g]` and `body_moves[g]` describe
-/// the walls' and bodies' particle groups.
+/// Warnings for the floating bodies (nets' knots included) with particles within dp/2 of a
+/// wall's particle or of another body's: one per body, naming the solid it overlaps most and
+/// how many of its particles do (at most kMaxListedOverlaps bodies named, then a count of the
+/// others). Fixed bodies may overlap walls and each other (a panel's crossing twines do), and
+/// a prescribed one goes where it is told (a paddle sunk into the floor to seal it).
+/// `wall_names[g]`, `body_names[g]` and `body_moves[g]` describe the walls' and bodies' particle
+/// groups.
 std::vector<std::string> solid_overlap_warnings(const ParticleSet& p, double dp, int dims,
                                                 const std::vector<std::string>& wall_names,
                                                 const std::vector<std::string>& body_names,
