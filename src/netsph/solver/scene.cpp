@@ -13,6 +13,7 @@
 #include "netsph/core/periodic_image.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/solver/half_spacing_search.hpp"
 #include "netsph/solver/hydrostatic_check.hpp"
 #include "netsph/solver/mach_check.hpp"
 #include "netsph/solver/solid_overlaps.hpp"
@@ -76,46 +77,9 @@ double sound_speed_of(const CaseSpec& spec, double depth) {
 /// Drops fluid particles closer than dp/2 to a kept particle created before them (walls first,
 /// then earlier fills): overlapping boxes must not double the mass. In creation order, so the
 /// result is the same whatever the grid: a particle removed removes nothing after it.
-///
-/// The grid's cells are dp wide, and a particle's candidates are those of the 2 cells on each
-/// axis nearest it (its own and the neighbour on the side of its nearer face; 3 within a
-/// round-off of the middle): every particle within dp/2 lies in them. The grid spans the
-/// particles' bounding box, air included, at 4 B a cell: with cells of dp/2 (the grid of the
-/// kernel support searched +-2 cells) it took 8 times as much, 270 MB for the 3D dam break at
-/// dp = 3.75 mm (1.7e6 particles), more than the run itself holds, and refused that case at
-/// dp = 1.2 mm for having over 2e9 cells.
-std::size_t remove_overlaps(ParticleSet& p, double dp, const Vec3d& lo, const Vec3d& hi, int dims) {
-  CellGrid grid;
-  grid.configure(lo, hi, CellGrid::kSearchCells * dp, 0.0, dims);  // cells of dp
-  std::vector<std::uint32_t> order;
-  grid.sort(p.pos, order);
-  const GridIndex& index = grid.index();
-  const double tol2 = 0.25 * dp * dp;
+std::size_t remove_overlaps(ParticleSet& p, const HalfSpacingSearch& search) {
   const auto overlaps_earlier = [&](std::uint32_t a, const std::vector<char>* keep) {
-    // The cells on each axis (x fastest, as CellGrid numbers them) that can hold a particle
-    // within dp/2 of a.
-    int first[3] = {0, 0, 0}, last[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k) {
-      if (dims == 2 && k == 1) continue;
-      const double f = (p.pos[a][k] - index.origin[k]) * index.inv_cell[k];
-      const int own = static_cast<int>(std::floor(f));
-      const double within = f - own;    // 0..1 in its cell
-      constexpr double kMargin = 1e-6;  // of a cell: covers the round-off of f
-      first[k] = std::max(within < 0.5 + kMargin ? own - 1 : own, 0);
-      last[k] = std::min(within > 0.5 - kMargin ? own + 1 : own, index.n[k] - 1);
-    }
-    if (first[0] > last[0]) return false;  // outside the grid (none is: it spans them all)
-    for (int z = first[2]; z <= last[2]; ++z)
-      for (int y = first[1]; y <= last[1]; ++y) {
-        const std::int64_t row = (static_cast<std::int64_t>(z) * index.n[1] + y) * index.n[0];
-        const std::uint32_t begin = grid.cell_range(row + first[0]).begin;
-        const std::uint32_t end = grid.cell_range(row + last[0]).end;
-        for (std::uint32_t t = begin; t < end; ++t) {
-          const std::uint32_t b = order[t];
-          if (b < a && (!keep || (*keep)[b]) && norm2(p.pos[a] - p.pos[b]) < tol2) return true;
-        }
-      }
-    return false;
+    return search.find(a, [&](std::uint32_t b) { return b < a && (!keep || (*keep)[b]); }) >= 0;
   };
   // Whose fate can depend on others: fluid particles with an earlier particle within dp/2.
   // Finding them is the O(n) part, independent per particle, so it runs in parallel (a set-up
@@ -333,17 +297,6 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
   const std::size_t fluid_outside_bodies = fluid_in_region();
   scene.removed_in_bodies = fluid_generated - fluid_outside_bodies;
   wrap_body_particles(spec, p);
-  if (!scene.bodies.empty()) {
-    std::vector<std::string> wall_names, body_names;
-    std::vector<bool> body_moves;
-    for (const auto& w : spec.walls) wall_names.push_back(w.name);
-    for (const auto& b : scene.bodies) {
-      body_names.push_back(b.name);
-      body_moves.push_back(b.motion == BodyMotion::Floating);
-    }
-    for (std::string& w : solid_overlap_warnings(p, dp, dims, wall_names, body_names, body_moves))
-      scene.warnings.push_back(std::move(w));
-  }
 
   // Bounding box of the particles, for the default domain and the overlap search (of the
   // part near the region; the particles past it are the whole scene's too, so the
@@ -399,7 +352,12 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
 
   if (p.size() > 0) {
     const Vec3d glo = lo - Vec3d(dp, dp, dp), ghi = hi + Vec3d(dp, dp, dp);
-    remove_overlaps(p, dp, glo, ghi, dims);
+    const HalfSpacingSearch search(p, dp, glo, ghi, dims);
+    if (!scene.bodies.empty()) {
+      for (std::string& w : solid_overlap_warnings(p, search, spec, scene.bodies))
+        scene.warnings.push_back(std::move(w));
+    }
+    remove_overlaps(p, search);
     scene.removed_overlaps = fluid_outside_bodies - fluid_in_region();
   }
   if (!region.everything()) {

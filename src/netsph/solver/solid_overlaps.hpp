@@ -7,21 +7,22 @@
 #include <string>
 #include <vector>
 
-#include "netsph/sph/particle_set.hpp"
+#include "netsph/bodies/rigid_body.hpp"
+#include "netsph/case/case_spec.hpp"
+#include "netsph/solver/half_spacing_search.hpp"
 
 namespace netsph {
 
 /// Warnings for the floating bodies (nets' knots included) with particles within dp/2 of a
-/// wall's particle or of another body's: one per body, naming the solid it overlaps most and
-/// how many of its particles do (at most kMaxListedOverlaps bodies named, then a count of the
-/// others). Fixed bodies may overlap walls and each other (a panel's crossing twines do), and
-/// a prescribed one goes where it is told (a paddle sunk into the floor to seal it).
-/// `wall_names[g]`, `body_names[g]` and `body_moves[g]` describe the walls' and bodies' particle
-/// groups.
-std::vector<std::string> solid_overlap_warnings(const ParticleSet& p, double dp, int dims,
-                                                const std::vector<std::string>& wall_names,
-                                                const std::vector<std::string>& body_names,
-                                                const std::vector<bool>& body_moves);
+/// wall's particle or of another body's (found by `search`, over `p`): one per body, naming
+/// the solid it overlaps most and how many of its particles do (at most kMaxListedOverlaps
+/// bodies named, then a count of the others). Fixed bodies may overlap walls and each other
+/// (a panel's crossing twines do), and a prescribed one goes where it is told (a paddle sunk
+/// into the floor to seal it). `bodies` are the bodies of the particles' groups.
+std::vector<std::string> solid_overlap_warnings(const ParticleSet& p,
+                                                const HalfSpacingSearch& search,
+                                                const CaseSpec& spec,
+                                                const std::vector<RigidBody>& bodies);
 
 inline constexpr std::size_t kMaxListedOverlaps = 5;
 
