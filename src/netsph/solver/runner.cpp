@@ -63,13 +63,26 @@ std::vector<std::string> collect_warnings(const Simulation& sim) {
   std::vector<std::string> w = sim.scene().warnings;
   const auto& d = sim.diagnostics();
   if (d.lost_total > 0) {
-    w.push_back(fmt::format("{} particles left the domain and were removed", d.lost_total));
+    const std::string where = describe_lost(d.last_lost);
+    w.push_back(fmt::format("{} particles left the domain and were removed{}", d.lost_total,
+                            where.empty() ? "" : "; the last to leave: " + where));
   }
   for (const CoupledNet& net : sim.nets()) {
     std::string at_bar = sinker_reactions_at_bar_warning(sim, net);
     if (!at_bar.empty()) w.push_back(std::move(at_bar));
   }
   return w;
+}
+
+/// The last particles that left the domain, as summary.json lists them.
+nlohmann::json lost_json(std::span<const StepDiagnostics::Lost> lost) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& l : lost) {
+    j.push_back({{"id", l.id},
+                 {"position_m", {l.pos.x, l.pos.y, l.pos.z}},
+                 {"velocity_m_s", {l.vel.x, l.vel.y, l.vel.z}}});
+  }
+  return j;
 }
 
 nlohmann::json summary_json(const Simulation& sim, const GlobalMeasures& g, const RunReport& r,
@@ -93,6 +106,7 @@ nlohmann::json summary_json(const Simulation& sim, const GlobalMeasures& g, cons
                     {"wall", g.walls},
                     {"buffer", g.buffer},
                     {"lost", d.lost_total},
+                    {"last_lost", lost_json(d.last_lost)},
                     {"inflow", d.open.entered_fluid},
                     {"outflow", d.open.removed}};
   j["time"] = {{"simulated_s", r.sim_time},
@@ -227,10 +241,13 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
       write_outputs([&](OutputParticles& p) {
         outputs->after_step(*view, p);
         if (view->diagnostics().lost_total > 0 && !warned_lost) {
+          // Where the first ones went tells a leak through a wall (just outside it) from a
+          // domain drawn too small (anywhere on its faces, moving with the flow).
+          const std::string where = describe_lost(view->diagnostics().last_lost);
           spdlog::warn(
               "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
-              "series.csv, lost_particles); enlarge [domain] if they should stay",
-              view->time());
+              "series.csv, lost_particles){}; enlarge [domain] if they should stay",
+              view->time(), where.empty() ? "" : ", first " + where);
           warned_lost = true;
         }
         warn_sinker_reactions_at_bar(*view, warned_at_bar);

@@ -493,12 +493,7 @@ void check_lost_fluid(const CaseSpec& spec, double time, std::int64_t steps,
   const bool burst = static_cast<double>(lost_this_step) > std::max(10.0, 0.01 * fluid);
   const bool total = static_cast<double>(lost_total) > spec.simulation.max_lost_fraction * fluid;
   if (!burst && !total) return;
-  std::string where;
-  for (const auto& l : last_lost) {
-    where += fmt::format(
-        "{}id {} at ({:.4g}, {:.4g}, {:.4g}) m moving ({:.3g}, {:.3g}, {:.3g}) m/s",
-        where.empty() ? ": " : "; ", l.id, l.pos.x, l.pos.y, l.pos.z, l.vel.x, l.vel.y, l.vel.z);
-  }
+  const std::string where = describe_lost(last_lost);
   throw SimulationUnstable(
       "solver",
       fmt::format("fluid is leaving the domain at t = {:.6g} s (step {}): {} particles in this "
@@ -507,7 +502,17 @@ void check_lost_fluid(const CaseSpec& spec, double time, std::int64_t steps,
                   time, steps, lost_this_step, lost_total,
                   100 * static_cast<double>(lost_total) / fluid,
                   static_cast<std::size_t>(std::max(10.0, 0.01 * fluid)),
-                  spec.simulation.max_lost_fraction, where));
+                  spec.simulation.max_lost_fraction, where.empty() ? "" : ": " + where));
+}
+
+std::string describe_lost(std::span<const StepDiagnostics::Lost> lost) {
+  std::string where;
+  for (const auto& l : lost) {
+    where += fmt::format(
+        "{}id {} at ({:.4g}, {:.4g}, {:.4g}) m moving ({:.3g}, {:.3g}, {:.3g}) m/s",
+        where.empty() ? "" : "; ", l.id, l.pos.x, l.pos.y, l.pos.z, l.vel.x, l.vel.y, l.vel.z);
+  }
+  return where;
 }
 
 std::string Simulation::fastest_accelerating() const {

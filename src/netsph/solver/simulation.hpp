@@ -75,6 +75,11 @@ void check_lost_fluid(const CaseSpec& spec, double time, std::int64_t steps,
                       std::size_t lost_this_step, std::size_t lost_total, std::size_t initial_fluid,
                       std::span<const StepDiagnostics::Lost> last_lost);
 
+/// "id N at (x, y, z) m moving (u, v, w) m/s; ..." for each particle of `lost` (positions just
+/// after they left the domain, so the face they crossed can be read off): empty when none is
+/// known (the device backends count lost particles but do not keep them).
+std::string describe_lost(std::span<const StepDiagnostics::Lost> lost);
+
 /// Where the particle work of a step runs: the CPU backend (OpenMP, backend/cpu), the CUDA
 /// device (the device-shaped step, backend/device on the CUDA executor), or that same step on
 /// the host executor (slow: it exists to check the CUDA backend's logic where there is no GPU).
