@@ -244,5 +244,36 @@ TEST(DistributedOutputs, AnOutputThatFailsStopsEveryProcess) {
   fs::remove_all(dir);
 }
 
+TEST(DistributedOutputs, ABodyInsideAWallIsNamedWhicheverProcessesHoldIt) {
+  // The sinking box sunk half its height into the tank's floor, across the middle of the
+  // tank: on four processes (slabs along x) it lies outside process 0's slab and across two
+  // others. The view must word the overlap as the one-process scene does, counts included.
+  const CaseSpec spec = read_case_file(std::string(NETSPH_CASES_DIR) + "/sinking_box2d.toml",
+                                       {"simulation.dp=0.02", "body.0.center=[0.5, 0.0, 0.0]"});
+  const auto overlap = [](const std::vector<std::string>& warnings) {
+    std::vector<std::string> found;
+    for (const std::string& w : warnings)
+      if (w.find("starts inside") != std::string::npos) found.push_back(w);
+    return found;
+  };
+  const std::vector<std::string> one = overlap(build_scene(spec).warnings);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_NE(one[0].find("body 'box' starts inside wall 'tank'"), std::string::npos) << one[0];
+  std::vector<std::string> four;
+  std::vector<std::size_t> holding(4, 0);  // the box's overlapping particles each counted
+  const std::vector<std::string> errors = test::on_thread_processes(4, [&](ThreadCollectives& c) {
+    DistributedStepper stepper(spec, c, nullptr);
+    const SolidOverlaps& own = stepper.simulation().local().scene().solid_overlaps;
+    for (const auto& [body, by_solid] : own.hits)
+      for (const auto& [solid, count] : by_solid) holding[c.rank()] += count;
+    if (c.rank() == 0) four = overlap(stepper.view()->scene().warnings);
+  });
+  for (const std::string& e : errors) EXPECT_EQ(e, "");
+  EXPECT_EQ(holding[0], 0u) << "the test wants the box outside process 0's slab";
+  EXPECT_GE(std::count_if(holding.begin(), holding.end(), [](std::size_t n) { return n > 0; }), 2)
+      << "the test wants the box across two slabs";
+  EXPECT_EQ(four, one);
+}
+
 }  // namespace
 }  // namespace netsph

@@ -66,20 +66,24 @@ class DistributedStepper::Reads final : public OutputParticles {
 DistributedStepper::DistributedStepper(const CaseSpec& spec, Collectives& coll,
                                        const CheckpointData* resume, RebalancePolicy rebalance)
     : coll_(coll), sim_(spec, coll, resume, rebalance) {
-  // The view: process 0's scene without its particles, and the counts of removed fluid and
-  // buffer particles summed over the parts (the case's own, as one process would report them).
+  // The view: process 0's scene without its particles, and the counts of removed fluid, buffer
+  // particles and bodies' overlaps summed over the parts (the case's own, as one process would
+  // report them).
   const Scene& part = sim_.local().scene();
   std::vector<double> counts = {static_cast<double>(part.removed_overlaps),
                                 static_cast<double>(part.removed_in_bodies)};
   for (const std::size_t n : part.buffer_counts) counts.push_back(static_cast<double>(n));
   coll_.sum(counts);
+  const std::vector<Bytes> overlaps = coll_.gather(part.solid_overlaps.pack());
   if (coll_.rank() != 0) return;
   Scene whole = part.without_particles();
+  whole.solid_overlaps = {};
+  for (const Bytes& b : overlaps) whole.solid_overlaps.add(SolidOverlaps::unpack(b));
   whole.removed_overlaps = static_cast<std::size_t>(counts[0]);
   whole.removed_in_bodies = static_cast<std::size_t>(counts[1]);
   for (std::size_t z = 0; z < whole.buffer_counts.size(); ++z)
     whole.buffer_counts[z] = static_cast<std::size_t>(counts[2 + z]);
-  report_particle_counts(whole);
+  report_particle_counts(whole, spec);
   view_ = std::make_unique<Simulation>(spec, StepBackend::Cpu,
                                        [&whole](const CaseSpec&) { return std::move(whole); });
   if (resume) view_->restore_state(*resume, AxisRange::nothing());

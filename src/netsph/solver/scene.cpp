@@ -354,8 +354,8 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
     const Vec3d glo = lo - Vec3d(dp, dp, dp), ghi = hi + Vec3d(dp, dp, dp);
     const HalfSpacingSearch search(p, dp, glo, ghi, dims);
     if (!scene.bodies.empty()) {
-      for (std::string& w : solid_overlap_warnings(p, search, spec, scene.bodies))
-        scene.warnings.push_back(std::move(w));
+      scene.solid_overlaps = find_solid_overlaps(
+          p, search, scene.bodies, [&](const Vec3d& x) { return region.contains(x); });
     }
     remove_overlaps(p, search);
     scene.removed_overlaps = fluid_outside_bodies - fluid_in_region();
@@ -369,11 +369,13 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
   scene.buffer_counts.assign(scene.zones.size(), 0);
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.kind[i] == ParticleKind::Buffer) ++scene.buffer_counts[p.group[i]];
-  if (region.everything()) report_particle_counts(scene);
+  if (region.everything()) report_particle_counts(scene, spec);
   return scene;
 }
 
-void report_particle_counts(Scene& scene) {
+void report_particle_counts(Scene& scene, const CaseSpec& spec) {
+  for (std::string& w : solid_overlap_warnings(scene.solid_overlaps, spec, scene.bodies))
+    scene.warnings.push_back(std::move(w));
   for (std::size_t z = 0; z < scene.zones.size(); ++z) {
     if (scene.buffer_counts.at(z) == 0) {
       scene.warnings.push_back(
@@ -403,6 +405,7 @@ Scene Scene::without_particles() const {
   s.removed_in_bodies = removed_in_bodies;
   s.buffer_counts = buffer_counts;
   s.thickened_bodies = thickened_bodies;
+  s.solid_overlaps = solid_overlaps;
   s.warnings = warnings;
   return s;
 }

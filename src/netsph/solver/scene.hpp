@@ -9,6 +9,7 @@
 #include "netsph/boundary/open_boundary.hpp"
 #include "netsph/case/case_spec.hpp"
 #include "netsph/geometry/box_lattice.hpp"
+#include "netsph/solver/solid_overlaps.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/particle_set.hpp"
 
@@ -33,6 +34,7 @@ struct Scene {
   std::size_t removed_in_bodies = 0;  ///< fluid particles dropped for lying inside a body
   std::vector<std::size_t> buffer_counts;  ///< buffer particles per zone at the start
   std::size_t thickened_bodies = 0;        ///< bodies resolved thicker than given (2 dp at least)
+  SolidOverlaps solid_overlaps;  ///< floating bodies' particles inside walls or other bodies
   std::vector<std::string> warnings;
 
   /// Everything but the particles (the outputs' view of a distributed run). Copies every
@@ -41,9 +43,10 @@ struct Scene {
 };
 
 /// Adds to `scene` the sources and warnings that rest on the counts of its particles (the
-/// buffers' sources, zones without buffer particles, fluid removed for overlapping): for the
-/// whole case, from build_scene's counts or from a distributed run's parts' summed.
-void report_particle_counts(Scene& scene);
+/// buffers' sources, zones without buffer particles, bodies starting inside solids, fluid
+/// removed for overlapping): for the whole case `spec`, from build_scene's counts or from a
+/// distributed run's parts' summed.
+void report_particle_counts(Scene& scene, const CaseSpec& spec);
 
 /// Builds the particles (walls first, then fills in file order) with hydrostatic density.
 /// Throws netsph::Error naming the case item when something cannot be built.
@@ -60,8 +63,9 @@ using WholeBounds = std::function<void(Vec3d& lo, Vec3d& hi)>;
 /// regions that tile the axis make up build_scene's particles exactly. The fills and walls
 /// are generated only near the region; the bodies' particles (a few surfaces) in full and
 /// then trimmed. `sources` count the whole case's walls, fills and bodies as generated; the
-/// counts of removed fluid and buffer particles are those in the region, to be summed over
-/// the parts (report_particle_counts, which a part leaves out).
+/// counts of removed fluid and buffer particles and of bodies' overlapping particles are those
+/// in the region, to be summed over the parts (report_particle_counts, which a part leaves
+/// out).
 Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
                        const WholeBounds& whole_bounds);
 
