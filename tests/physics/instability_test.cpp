@@ -119,22 +119,24 @@ TEST(Instability, ARestartTakesTheDtMinItIsGiven) {
   EXPECT_NO_THROW(unchanged.step());
 }
 
-TEST(Instability, FluidLeavingTheDomainStopsWithWhereItWent) {
-  // Gravity upwards and a lid-less domain 0.2 m above the water: the column lifts out of
-  // the top. Checkpoints every 0.005 s: the last good one must survive the failure.
-  Simulation sim(test::load_case(
-      "dambreak2d.toml", {"simulation.dp=0.04", "fluid.sound_speed=30", "fluid.gravity=[0,0,40]",
-                          "domain.max=[4.5,0,2.2]", "wall.0.max=[4,0,2.1]",
-                          "output.checkpoint_every=0.005", "output.snapshot_every=0.01"}));
-  const fs::path dir = fresh_dir("escape");
+// Gravity upwards and a lid-less domain 0.2 m above the water: the column lifts out of the
+// top. Checkpoints every 0.005 s: the last good one must survive the failure.
+void expect_stop_naming_where_fluid_went(StepBackend backend, const std::string& name) {
+  Simulation sim(
+      test::load_case("dambreak2d.toml",
+                      {"simulation.dp=0.04", "fluid.sound_speed=30", "fluid.gravity=[0,0,40]",
+                       "domain.max=[4.5,0,2.2]", "wall.0.max=[4,0,2.1]",
+                       "output.checkpoint_every=0.005", "output.snapshot_every=0.01"}),
+      backend);
+  const fs::path dir = fresh_dir(name);
   const RunReport r = run_quietly(sim, dir);
   ASSERT_EQ(r.status, "unstable");
   EXPECT_NE(r.message.find("fluid is leaving the domain at t = "), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("the last to leave: id "), std::string::npos) << r.message;
   EXPECT_GT(sim.diagnostics().lost_total, 0u);
   EXPECT_LT(r.sim_time, 0.5);
-  std::printf("stopped at t = %.4f s, step %lld: %s\n", r.sim_time, static_cast<long long>(r.steps),
-              r.message.c_str());
+  std::printf("%s: stopped at t = %.4f s, step %lld: %s\n", name.c_str(), r.sim_time,
+              static_cast<long long>(r.steps), r.message.c_str());
   ASSERT_TRUE(fs::exists(checkpoint_path(dir)));
   const CheckpointData c = read_checkpoint_file(checkpoint_path(dir));
   EXPECT_LT(c.real("sim.time"), r.sim_time);  // the last good state, not the failed one
@@ -144,10 +146,22 @@ TEST(Instability, FluidLeavingTheDomainStopsWithWhereItWent) {
   // The summary names the last to leave, just past the face they crossed: the open top.
   const auto& last = summary["particles"]["last_lost"];
   ASSERT_FALSE(last.empty());
+  EXPECT_LE(last.size(), kLostParticlesKept);
   for (const auto& l : last) {
     EXPECT_GT(l["position_m"][2].get<double>(), 2.2) << l.dump();
+    EXPECT_LT(l["position_m"][2].get<double>(), 2.4) << l.dump();  // one step past the top
     EXPECT_GT(l["velocity_m_s"][2].get<double>(), 0.0) << l.dump();
   }
+}
+
+TEST(Instability, FluidLeavingTheDomainStopsWithWhereItWent) {
+  expect_stop_naming_where_fluid_went(StepBackend::Cpu, "escape");
+}
+
+// The device step (its logic run on the host) names them the same way: it copies back the
+// particles its sort drops, but not the outlets' removals.
+TEST(Instability, FluidLeavingTheDomainOnTheDeviceStepStopsWithWhereItWent) {
+  expect_stop_naming_where_fluid_went(StepBackend::HostDevice, "escape_device");
 }
 
 }  // namespace

@@ -317,8 +317,7 @@ void DistributedSimulation::check_lost(const ExchangeReport& report) {
       for (std::size_t k = 0; k < n; ++k) {
         StepDiagnostics::Lost l;
         std::memcpy(&l, b.data() + k * sizeof l, sizeof l);
-        if (last_lost_.size() == 5) last_lost_.erase(last_lost_.begin());
-        last_lost_.push_back(l);
+        remember_lost(last_lost_, l);
       }
     }
   }

@@ -78,8 +78,7 @@ void resize_all(ParticleSet& p, std::size_t n) {
 
 void note_lost(ExchangeReport& r, const ParticleSet& p, std::size_t i) {
   ++r.lost;
-  if (r.last_lost.size() == 5) r.last_lost.erase(r.last_lost.begin());
-  r.last_lost.push_back({p.id[i], p.pos[i], p.vel[i]});
+  remember_lost(r.last_lost, {p.id[i], p.pos[i], p.vel[i]});
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ namespace netsph {
 
 struct ExchangeReport {
   std::uint64_t lost = 0;  ///< own particles that left the domain (or vanished) in the step
-  std::vector<StepDiagnostics::Lost> last_lost;  ///< up to 5 of them
+  std::vector<StepDiagnostics::Lost> last_lost;  ///< the last kLostParticlesKept of them
   std::uint64_t sent = 0, received = 0;          ///< migrated to and from other processes
   std::uint64_t halo = 0;                        ///< halo copies received
 };

@@ -207,8 +207,7 @@ void Simulation::sort_particles(bool mid_step) {
     for (const std::uint32_t i : order_) kept_[i] = 1;
     for (std::size_t i = 0; i < before; ++i) {
       if (kept_[i] || !std::isfinite(p_.pos[i].x)) continue;
-      if (diag_.last_lost.size() == 5) diag_.last_lost.erase(diag_.last_lost.begin());
-      diag_.last_lost.push_back({p_.id[i], p_.pos[i], p_.vel[i]});
+      remember_lost(diag_.last_lost, {p_.id[i], p_.pos[i], p_.vel[i]});
     }
   }
   gather_into(p_.kind, order_, scratch_kind_);

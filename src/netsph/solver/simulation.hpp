@@ -37,6 +37,7 @@
 #include "netsph/solver/net_coupling.hpp"
 #include "netsph/solver/scene.hpp"
 #include "netsph/solver/step_partition.hpp"
+#include "netsph/sph/lost_particle.hpp"
 #include "netsph/sph/particle_tally.hpp"
 #include "netsph/sph/shepard.hpp"
 #include "netsph/sph/shifting.hpp"
@@ -60,11 +61,7 @@ struct StepDiagnostics {
   std::size_t mdbc_fallbacks = 0;  ///< mDBC ghosts solved at zeroth order, last step
   /// The last particles that left the domain (not through an outlet): up to 5, for the report
   /// of a run stopped for losing fluid.
-  struct Lost {
-    std::uint32_t id;
-    Vec3d pos;
-    Vec3f vel;
-  };
+  using Lost = LostParticle;
   std::vector<Lost> last_lost;
 };
 

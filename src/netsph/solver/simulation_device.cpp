@@ -75,6 +75,7 @@ void Simulation::device_step() {
   diag_.open.entered_fluid += r.entered_fluid;
   diag_.open.absorbed += r.absorbed;
   diag_.lost_total += r.lost;
+  for (const LostParticle& l : r.last_lost) remember_lost(diag_.last_lost, l);
   if (r.resorted) ++diag_.resorts;
   diag_.max_speed = r.max_speed;
   check_lost(r.lost);

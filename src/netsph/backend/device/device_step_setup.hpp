@@ -10,6 +10,7 @@
 #include "netsph/neighbors/grid_index.hpp"
 #include "netsph/sph/fluid_point_loads.hpp"
 #include "netsph/sph/fluid_sampler.hpp"
+#include "netsph/sph/lost_particle.hpp"
 #include "netsph/sph/time_step.hpp"
 
 namespace netsph {
@@ -66,11 +67,12 @@ struct DeviceStepReport {
   DeviceStepStatus status = DeviceStepStatus::Ok;
   TimeStepLimits dt_limits;
   double dt_floor = 0;
-  std::size_t lost = 0;           ///< particles dropped this step for leaving the grid
-  std::size_t created = 0;        ///< inlet buffer particles created this step
-  std::size_t removed = 0;        ///< buffer particles that left through a face this step
-  std::size_t entered_fluid = 0;  ///< buffer particles that became fluid this step
-  std::size_t absorbed = 0;       ///< fluid particles that became buffer particles this step
+  std::size_t lost = 0;                 ///< particles dropped this step for leaving the grid
+  std::vector<LostParticle> last_lost;  ///< the last kLostParticlesKept of them, when lost > 0
+  std::size_t created = 0;              ///< inlet buffer particles created this step
+  std::size_t removed = 0;              ///< buffer particles that left through a face this step
+  std::size_t entered_fluid = 0;        ///< buffer particles that became fluid this step
+  std::size_t absorbed = 0;             ///< fluid particles that became buffer particles this step
   bool resorted = false;
   double max_speed = 0;  ///< largest fluid speed at the end of the step, m/s
 };

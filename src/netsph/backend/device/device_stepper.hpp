@@ -119,7 +119,8 @@ class DeviceStepper {
     // created particles and drops the removed ones.
     if (!s_.zones.empty()) open_boundaries(rep);
     const std::size_t before = n_;
-    sort(false);
+    lost_now_.clear();
+    sort(false, rep.removed);
     rep.lost = before - n_ - rep.removed;
     wall_motion(0.0);  // velocities at t for the boundary state
     place_bodies(false);
@@ -150,10 +151,11 @@ class DeviceStepper {
     if (has_bodies_) moved = std::max(moved, place_bodies(true));
     if (moved > s_.max_displacement) {
       const std::size_t before_resort = n_;
-      sort(true);
+      sort(true, 0);
       rep.lost += before_resort - n_;  // left the grid in the half step
       rep.resorted = true;
     }
+    rep.last_lost = lost_now_;
     view(true);
     rates(s_.shifting);
     if (has_bodies_) {
@@ -327,7 +329,9 @@ class DeviceStepper {
   /// Wraps periodic axes, sorts every array by cell and rebuilds the cell table; drops the
   /// particles outside the grid. Mid-step (after the predictor) the step start's velocities
   /// and densities move too.
-  void sort(bool mid_step) {
+  /// `removed`: the outlets' removals among the particles it drops (their positions are NaN);
+  /// any more left the grid, and the last few of those are kept in lost_now_.
+  void sort(bool mid_step, std::size_t removed) {
     std::optional<PhaseTimer<Exec>> timer(std::in_place, profile(), DevicePhase::SortKeys);
     const GridIndex g = s_.grid;
     const DeviceState st = state();
@@ -352,6 +356,7 @@ class DeviceStepper {
     }
     const std::uint32_t* sorted_order = in_alt ? sa.order_alt : sa.order;
     const std::size_t kept = Exec::count_below(keys_.data(), n_, g.sentinel());
+    if (n_ - kept > removed) note_lost(sorted_order + kept, n_ - kept);
     timer.emplace(profile(), DevicePhase::Gather);
     gather(pos_, sorted_order, sa.scratch, kept), gather(vel_, sorted_order, sa.scratch, kept);
     gather(rho_, sorted_order, sa.scratch, kept), gather(kind_, sorted_order, sa.scratch, kept);
@@ -378,6 +383,22 @@ class DeviceStepper {
       begin[k[i]] = j - i;
     });
     Exec::exclusive_scan(begin, begin, entries);
+  }
+
+  /// Copies the `count` dropped particles at `dropped` back (rare: only in a step that lost
+  /// some) and keeps the last of those that left the grid, not through an outlet.
+  void note_lost(const std::uint32_t* dropped, std::size_t count) {
+    Exec::resize_discarding(dropped_, count);
+    LostParticle* out = dropped_.data();
+    const DeviceState st = state();
+    Exec::for_each(count, [=] NETSPH_LAMBDA(std::uint32_t i) {
+      const std::uint32_t j = dropped[i];
+      out[i].id = st.id[j], out[i].pos = st.pos[j], out[i].vel = st.vel[j];
+    });
+    dropped_host_.resize(count);
+    Exec::download(dropped_host_.data(), dropped_, count);
+    for (const LostParticle& l : dropped_host_)
+      if (std::isfinite(l.pos.x)) remember_lost(lost_now_, l);
   }
 
   /// v = v[order] for the first `kept` sorted slots: gathered into the scratch, copied back
@@ -780,7 +801,9 @@ class DeviceStepper {
   Buffer<Real> rho_, srho_;
   Buffer<ParticleKind> kind_;
   Buffer<std::uint32_t> id_, group_, keys_, cell_begin_;
-  Buffer<unsigned char> work_;  ///< the phases' short-lived arrays (work_area.hpp)
+  Buffer<unsigned char> work_;    ///< the phases' short-lived arrays (work_area.hpp)
+  Buffer<LostParticle> dropped_;  ///< note_lost's copies
+  std::vector<LostParticle> dropped_host_, lost_now_;
   Buffer<DeviceWall> walls_;
   Buffer<WallKinematics> motion_;
   std::vector<WallKinematics> motion_host_;
