@@ -4,6 +4,7 @@
 // docs/case-reference.md documents every key; keep the two in step.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -199,6 +200,7 @@ OpenBoundarySpec CaseReader::read_open_boundary(const toml::table& table, bool i
   ob.layers =
       static_cast<int>(r.integer("layers", IntRule{1, 20}, std::max(ob.layers, support_layers())));
   check_buffer(r, ob);
+  check_buffer_clear_of_walls(r, ob, kind);
   read_open_velocity(r, inlet, ob);
   ob.density = r.choice("density", kBufferDensities, ob.density);
   if (ob.density == BufferDensity::Hydrostatic && spec_.fluid.gravity.z == 0) {
@@ -260,6 +262,47 @@ void CaseReader::check_face_free(const TomlTableReader& r, const OpenBoundarySpe
                              kFaceNames[ob.face], slot->label, slot->where.str()));
   }
   slot = NamedEntry{ob.name, label, ob.where};
+}
+
+// A wall face on the plane of an open face (a box spanning the channel, with the default of all
+// six faces) would put the wall's layers across the buffer, or outside [domain]: caught here, on
+// the open boundary, with the wall to change, before the scene reports a particle outside the
+// domain without saying why it is there.
+void CaseReader::check_buffer_clear_of_walls(const TomlTableReader& r, const OpenBoundarySpec& ob,
+                                             std::string_view kind) const {
+  const int axis = ob.face / 2;
+  const bool at_min = ob.face % 2 == 0;
+  const DomainSpec& d = spec_.domain;
+  const double dp = spec_.simulation.dp;
+  const double width = ob.layers * dp;
+  const double buffer_lo = at_min ? d.min[axis] : d.max[axis] - width;
+  const double buffer_hi = at_min ? d.min[axis] + width : d.max[axis];
+  for (const WallSpec& wall : spec_.walls) {
+    if (!wall.faces[static_cast<std::size_t>(ob.face)]) continue;
+    // That face's layers lie on the box's outer side of its plane.
+    const double plane = at_min ? wall.box.min[axis] : wall.box.max[axis];
+    const double layers = wall.layers * dp;
+    const double lo = at_min ? plane - layers : plane;
+    const double hi = at_min ? plane : plane + layers;
+    // Across the buffer, or beyond the open face (outside [domain], where the inflow comes from).
+    const double inf = std::numeric_limits<double>::infinity();
+    const double reach_lo = at_min ? -inf : buffer_lo, reach_hi = at_min ? buffer_hi : inf;
+    if (std::min(hi, reach_hi) - std::max(lo, reach_lo) <= 0.25 * dp) continue;
+    bool across = true;  // the wall's face and the open face overlap across the other axes
+    for (int b = 0; b < 3; ++b) {
+      if (b == axis || (is_2d() && b == 1)) continue;
+      across = across && wall.box.min[b] < d.max[b] && wall.box.max[b] > d.min[b];
+    }
+    if (!across) continue;
+    r.fail_value(
+        "face", *r.find("face"),
+        fmt::format("wall \"{}\" ({}) has face \"{}\" at {} = {} m: its particle layers ({} .. {} "
+                    "m) would lie across this {}'s buffer ({} .. {} m) and close it; remove \"{}\" "
+                    "from that wall's faces (without a faces key a wall has all of them)",
+                    wall.name, wall.where.str(), kFaceNames[ob.face], "xyz"[axis],
+                    format_number(plane), format_derived(lo), format_derived(hi), kind,
+                    format_derived(buffer_lo), format_derived(buffer_hi), kFaceNames[ob.face]));
+  }
 }
 
 void CaseReader::check_buffer(const TomlTableReader& r, const OpenBoundarySpec& ob) {

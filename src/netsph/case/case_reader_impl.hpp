@@ -120,6 +120,9 @@ class CaseReader {
   void check_periodic_open_faces() const;
   void check_face_free(const TomlTableReader& r, const OpenBoundarySpec& ob,
                        const std::string& label);
+  /// No wall's particle layers lie in an open boundary's buffer (a wall face on the open face).
+  void check_buffer_clear_of_walls(const TomlTableReader& r, const OpenBoundarySpec& ob,
+                                   std::string_view kind) const;
   /// Names are unique among all walls, inlets, outlets and bodies.
   void register_name(const toml::table& table, const std::string& name, std::string_view kind,
                      const std::string& label, const SourceLocation& where);
