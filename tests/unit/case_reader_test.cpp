@@ -392,6 +392,32 @@ max = [1, 0, 0.5]
   EXPECT_EQ(spec.domain.periodic, (std::array<bool, 3>{true, false, true}));
 }
 
+// A flume's walls along a periodic axis: a period of whole dp passes, to the few digits a user
+// copies from the error's suggestion; a wall shorter than the period, or a period of fractional
+// dp with no wall spanning it, is not checked (tests/cases/bad has the error itself).
+TEST(CaseReader, WallsAcrossAPeriodNeedAWholeNumberOfDp) {
+  const auto flume = [](const std::string& dp, const std::string& wall_max_x) {
+    return "[simulation]\ndp = " + dp +
+           "\nend_time = 1\n[domain]\nmin = [-0.3, -0.33, -0.5]\nmax = [0.5, 0.33, 0.1]\n"
+           "periodic = [\"x\"]\n[[fill]]\nmin = [-0.3, -0.225, -0.4]\nmax = [0.5, 0.225, 0.0]\n"
+           "[[wall]]\nmin = [-0.3, -0.225, -0.4]\nmax = [" +
+           wall_max_x + ", 0.225, 0.0]\nfaces = [\"ymin\", \"ymax\", \"zmin\", \"zmax\"]\n";
+  };
+  EXPECT_NO_THROW(read_case_string(flume("0.0125", "0.5"), "64dp"));
+  EXPECT_NO_THROW(read_case_string(flume("0.00601504", "0.5"), "133dp"));  // 0.8 / 133
+  EXPECT_NO_THROW(read_case_string(flume("0.006", "0.4"), "short"));
+  EXPECT_THROW(read_case_string(flume("0.006", "0.5"), "fractional"), Error);
+  try {
+    read_case_string(flume("0.0075", "0.5"), "crowded");
+    FAIL() << "a period of 106.7 dp was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("0.667 dp apart instead of 1"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("such as 0.00747663551 m (107 spacings) or 0.00754716981 m (106)"),
+              std::string::npos)
+        << e.message();
+  }
+}
+
 TEST(CaseReader, WallVelocityIsAConstantMotion) {
   const CaseSpec spec = read_case_string(kMinimal +
                                              "[[wall]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n"

@@ -91,6 +91,8 @@ class CaseReader {
   /// A fill's or wall's box holds at least one and at most 2^31 - 21 lattice spacings
   /// (simulation.dp) on every axis.
   void check_box_fits_lattice(const TomlTableReader& r, const BoxSpec& box) const;
+  /// A wall along a periodic axis, across the whole period, needs a period of whole dp.
+  void check_wall_seamless(const TomlTableReader& r, const WallSpec& wall) const;
   void read_output();
   void read_force_window(const TomlTableReader& r);
   void read_snapshot_region(const TomlTableReader& r);
