@@ -122,8 +122,7 @@ class DeviceStepper {
     // created particles and drops the removed ones.
     if (!s_.zones.empty()) open_boundaries(rep);
     const std::size_t before = n_;
-    lost_now_.clear();
-    sort(false, rep.removed);
+    sort(false, rep.removed, rep.last_lost);
     rep.lost = before - n_ - rep.removed;
     wall_motion(0.0);  // velocities at t for the boundary state
     place_bodies(false);
@@ -154,11 +153,10 @@ class DeviceStepper {
     if (has_bodies_) moved = std::max(moved, place_bodies(true));
     if (moved > s_.max_displacement) {
       const std::size_t before_resort = n_;
-      sort(true, 0);
+      sort(true, 0, rep.last_lost);
       rep.lost += before_resort - n_;  // left the grid in the half step
       rep.resorted = true;
     }
-    rep.last_lost = lost_now_;
     view(true);
     rates(s_.shifting);
     if (has_bodies_) {
@@ -334,12 +332,13 @@ class DeviceStepper {
   /// particles outside the grid. Mid-step (after the predictor) the step start's velocities
   /// and densities move too.
   /// `removed`: the outlets' removals among the particles it drops (their positions are NaN);
-  /// any more left the grid, and the last few of those are kept in lost_now_.
-  void sort(bool mid_step, std::size_t removed);
+  /// any more left the grid, and the last few of those are added to `last_lost`.
+  void sort(bool mid_step, std::size_t removed, std::vector<LostParticle>& last_lost);
 
   /// Copies the `count` dropped particles at `dropped` back (rare: only in a step that lost
-  /// some) and keeps the last of those that left the grid, not through an outlet.
-  void note_lost(const std::uint32_t* dropped, std::size_t count);
+  /// some) and adds to `last_lost` the last of those that left the grid, not through an outlet.
+  void note_lost(const std::uint32_t* dropped, std::size_t count,
+                 std::vector<LostParticle>& last_lost);
 
   /// v = v[order] for the first `kept` sorted slots: gathered into the scratch, copied back
   /// (a streaming copy; the scratch is shared by every array, whatever its type).
@@ -445,9 +444,7 @@ class DeviceStepper {
   Buffer<Real> rho_, srho_;
   Buffer<ParticleKind> kind_;
   Buffer<std::uint32_t> id_, group_, keys_, cell_begin_;
-  Buffer<unsigned char> work_;    ///< the phases' short-lived arrays (work_area.hpp)
-  Buffer<LostParticle> dropped_;  ///< note_lost's copies
-  std::vector<LostParticle> dropped_host_, lost_now_;
+  Buffer<unsigned char> work_;  ///< the phases' short-lived arrays (work_area.hpp)
   Buffer<DeviceWall> walls_;
   Buffer<WallKinematics> motion_;
   std::vector<WallKinematics> motion_host_;

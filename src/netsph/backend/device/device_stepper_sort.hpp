@@ -7,7 +7,8 @@
 namespace netsph {
 
 template <class Exec>
-void DeviceStepper<Exec>::sort(bool mid_step, std::size_t removed) {
+void DeviceStepper<Exec>::sort(bool mid_step, std::size_t removed,
+                               std::vector<LostParticle>& last_lost) {
   std::optional<PhaseTimer<Exec>> timer(std::in_place, profile(), DevicePhase::SortKeys);
   const GridIndex g = s_.grid;
   const DeviceState st = state();
@@ -32,7 +33,7 @@ void DeviceStepper<Exec>::sort(bool mid_step, std::size_t removed) {
   }
   const std::uint32_t* sorted_order = in_alt ? sa.order_alt : sa.order;
   const std::size_t kept = Exec::count_below(keys_.data(), n_, g.sentinel());
-  if (n_ - kept > removed) note_lost(sorted_order + kept, n_ - kept);
+  if (n_ - kept > removed) note_lost(sorted_order + kept, n_ - kept, last_lost);
   timer.emplace(profile(), DevicePhase::Gather);
   gather(pos_, sorted_order, sa.scratch, kept), gather(vel_, sorted_order, sa.scratch, kept);
   gather(rho_, sorted_order, sa.scratch, kept), gather(kind_, sorted_order, sa.scratch, kept);
@@ -62,18 +63,21 @@ void DeviceStepper<Exec>::sort(bool mid_step, std::size_t removed) {
 }
 
 template <class Exec>
-void DeviceStepper<Exec>::note_lost(const std::uint32_t* dropped, std::size_t count) {
-  Exec::resize_discarding(dropped_, count);
-  LostParticle* out = dropped_.data();
+void DeviceStepper<Exec>::note_lost(const std::uint32_t* dropped, std::size_t count,
+                                    std::vector<LostParticle>& last_lost) {
+  // Rare (a step that lost particles): the copies are made and freed here.
+  Buffer<LostParticle> copies;
+  Exec::resize_discarding(copies, count);
+  LostParticle* out = copies.data();
   const DeviceState st = state();
   Exec::for_each(count, [=] NETSPH_LAMBDA(std::uint32_t i) {
     const std::uint32_t j = dropped[i];
     out[i].id = st.id[j], out[i].pos = st.pos[j], out[i].vel = st.vel[j];
   });
-  dropped_host_.resize(count);
-  Exec::download(dropped_host_.data(), dropped_, count);
-  for (const LostParticle& l : dropped_host_)
-    if (std::isfinite(l.pos.x)) remember_lost(lost_now_, l);
+  std::vector<LostParticle> host(count);
+  Exec::download(host.data(), copies, count);
+  for (const LostParticle& l : host)
+    if (std::isfinite(l.pos.x)) remember_lost(last_lost, l);
 }
 
 template <class Exec>
