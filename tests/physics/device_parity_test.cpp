@@ -180,8 +180,9 @@ void expect_same_for_every_batch(const std::string& name, const std::vector<std:
     plain.emplace(spec, StepBackend::HostDevice);
   }
   for (int s = 0; s < steps; ++s) plain->step();
-  for (const auto& [size, trimmed] : {std::pair{"0", "1"}, std::pair{"1", "1"}, std::pair{"3", "1"},
-                                      std::pair{"32", "1"}, std::pair{"32", "0"}}) {
+  for (const auto& [size, trimmed] :
+       {std::pair{"0", "1"}, std::pair{"1", "1"}, std::pair{"3", "1"}, std::pair{"16", "1"},
+        std::pair{"32", "1"}, std::pair{"32", "0"}}) {
     SCOPED_TRACE(std::string("batch ") + size + ", trimmed " + trimmed);
     const ScopedEnv batch("NETSPH_RATES_BATCH", size), trim("NETSPH_RATES_TRIM", trimmed);
     Simulation batched(spec, StepBackend::HostDevice);
@@ -228,6 +229,7 @@ TEST(DeviceParity, RatesKernelSettingsOutsideTheirRangeAreAClearError) {
   expect_environment_error("NETSPH_RATES_MAX_REGISTERS", "48",
                            "NETSPH_RATES_MAX_REGISTERS is '48': it must be a whole number 0 (no "
                            "cap), 64 or 80");
+  expect_environment_error("NETSPH_CUDA_FAST_MATH", "yes", "NETSPH_CUDA_FAST_MATH is 'yes'");
   expect_environment_error("NETSPH_RATES_TRIM", "2",
                            "NETSPH_RATES_TRIM is '2': it must be a whole number 0 (all 125 "
                            "cells) or 1 (the cells within reach)");
@@ -458,14 +460,15 @@ std::string gpu_unavailable() {
 }
 
 // The rates kernel's variants a GPU session measures (device_rates_particle's batches,
-// the register caps, the untrimmed scan): each must match the CPU as the default does.
+// the register caps, the untrimmed scan, fast math): each must match the CPU as the default does.
 // Poiseuille: periodic x.
 TEST(DeviceParity, CudaRatesKernelVariantsMatchTheCpuBackend) {
   SKIP_WITHOUT_GPU();
   for (const auto& [name, value] :
        {std::pair{"NETSPH_RATES_BATCH", "0"}, std::pair{"NETSPH_RATES_BATCH", "1"},
-        std::pair{"NETSPH_RATES_BATCH", "8"}, std::pair{"NETSPH_RATES_MAX_REGISTERS", "64"},
-        std::pair{"NETSPH_RATES_MAX_REGISTERS", "0"}, std::pair{"NETSPH_RATES_TRIM", "0"}}) {
+        std::pair{"NETSPH_RATES_BATCH", "8"}, std::pair{"NETSPH_RATES_BATCH", "32"},
+        std::pair{"NETSPH_RATES_MAX_REGISTERS", "80"}, std::pair{"NETSPH_RATES_MAX_REGISTERS", "0"},
+        std::pair{"NETSPH_RATES_TRIM", "1"}, std::pair{"NETSPH_CUDA_FAST_MATH", "1"}}) {
     SCOPED_TRACE(std::string(name) + "=" + value);
     const ScopedEnv scoped(name, value);
     expect_parity(compare("poiseuille2d.toml", kPoiseuille, 100, StepBackend::Cuda));

@@ -14,3 +14,15 @@
 #else
 #define NETSPH_INLINE_LAMBDA __attribute__((always_inline))
 #endif
+
+/// Whether `p` holds on any thread of the GPU warp that reaches this call together with the
+/// caller (on the CPU, one thread: `p` itself). Lets every thread of a warp take a branch when
+/// one needs it, so that they run its body together instead of one after another
+/// (device_rates_particle's batches).
+NETSPH_HD bool any_lane(bool p) {
+#if defined(__CUDA_ARCH__)
+  return __any_sync(__activemask(), p);
+#else
+  return p;
+#endif
+}

@@ -27,26 +27,32 @@ long whole_number_from_environment(const char* name, long fallback, Valid valid,
   return v;
 }
 
-/// NETSPH_RATES_BATCH: how many neighbours a device rates pass gathers before summing them
-/// (device_rates_particle; 0: each pair summed where it is found); NETSPH_RATES_MAX_REGISTERS:
-/// 80 (the default), 64 or 0 (none) caps the rates kernel's registers
-/// (DeviceSetup::rates_registers);
-/// NETSPH_RATES_TRIM: 0 scans every candidate cell (DeviceSetup::rates_trimmed). Knobs for
-/// measuring the GPU, not physical settings: the results are the same for every value.
+/// NETSPH_RATES_BATCH: how many neighbours a thread of a device rates pass holds before its warp
+/// sums them (device_rates_particle; 0: each pair summed where it is found);
+/// NETSPH_RATES_MAX_REGISTERS: 64 (the default), 80 or 0 (none) caps the rates kernel's
+/// registers (DeviceSetup::rates_registers); NETSPH_RATES_TRIM: 1 scans only the cells within
+/// reach, 0 (the default) every candidate cell (DeviceSetup::rates_trimmed);
+/// NETSPH_CUDA_FAST_MATH: 1 runs the CUDA step compiled with --use_fast_math
+/// (DeviceSetup::cuda_fast_math). Knobs for measuring the GPU, not physical settings: the
+/// results are the same for every value (fast math: to float round-off).
 void rates_kernel_from_environment(DeviceSetup& s) {
   s.rates_batch = static_cast<std::uint32_t>(whole_number_from_environment(
-      "NETSPH_RATES_BATCH", kRatesBatchMax,
+      "NETSPH_RATES_BATCH", kRatesBatchDefault,
       [](long v) { return v >= 0 && v <= static_cast<long>(kRatesBatchMax); },
       "from 0 (no batches) to " + std::to_string(kRatesBatchMax)));
   const long registers = whole_number_from_environment(
-      "NETSPH_RATES_MAX_REGISTERS", 80, [](long v) { return v == 0 || v == 64 || v == 80; },
+      "NETSPH_RATES_MAX_REGISTERS", 64, [](long v) { return v == 0 || v == 64 || v == 80; },
       "0 (no cap), 64 or 80");
   s.rates_registers = registers == 80   ? RatesRegisterCap::To80
                       : registers == 64 ? RatesRegisterCap::To64
                                         : RatesRegisterCap::None;
   s.rates_trimmed = whole_number_from_environment(
-                        "NETSPH_RATES_TRIM", 1, [](long v) { return v == 0 || v == 1; },
+                        "NETSPH_RATES_TRIM", 0, [](long v) { return v == 0 || v == 1; },
                         "0 (all 125 cells) or 1 (the cells within reach)") == 1;
+  s.cuda_fast_math =
+      whole_number_from_environment(
+          "NETSPH_CUDA_FAST_MATH", 0, [](long v) { return v == 0 || v == 1; },
+          "0 (IEEE float division and square root) or 1 (nvcc's --use_fast_math)") == 1;
 }
 
 }  // namespace

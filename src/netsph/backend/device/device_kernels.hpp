@@ -161,6 +161,11 @@ NETSPH_HD void device_view_particle(const DeviceState& s, const DeviceView& v, c
 
 /// The most neighbours a rates pass gathers before summing them (device_rates_particle).
 inline constexpr std::uint32_t kRatesBatchMax = 32;
+/// The batch a rates pass sums at unless NETSPH_RATES_BATCH says otherwise: the fastest on an
+/// H200 at 1e7 particles (untrimmed, 64 registers; docs/PERFORMANCE.md "CUDA"): 2.67e8
+/// particle-steps/s at 12, 2.64e8 at 8, 2.63e8 at 4 and 6, 2.47e8 at 16, 2.34e8 at 0. Larger
+/// batches overflow the 32 inside a row, where each thread sums alone (1.33e8 at 24).
+inline constexpr std::uint32_t kRatesBatchDefault = 12;
 
 /// The periodic shift that brings a neighbour at offset d (along one axis) within reach: the
 /// nearest image. A neighbour is within the support (< period / 2.5, CellGrid) through exactly
@@ -183,16 +188,19 @@ NETSPH_HD PairOffset pair_offset(Real xa, Real ya, Real za, Vec3f shift, const P
 /// Rates of particle a: fluid particles sum every neighbour (fluid_pair_rates), wall particles
 /// the fluid ones (boundary_pair_rates), as backend/cpu/rates.cpp.
 ///
-/// The scan gathers up to `batch` neighbours (at most kRatesBatchMax), then sums them, then
-/// scans on (batch 0: each pair is summed where it is found). Why: the 32 threads of a GPU warp
-/// execute together, and about a quarter of the candidates in the 125 cells of size h around a
-/// particle are neighbours. Summing each pair where the scan finds it (DualSPHysics' loop) runs the
-/// pair terms whenever any thread of the warp has just found one, with most threads idle, so the
-/// warp pays the pair terms for nearly every candidate. Gathered first, every thread of the warp
-/// has a batch to sum and the warp pays them for about one candidate in four. The neighbours, their
-/// order and the sums are those of a single loop, whatever the batch size (bit for bit on the
-/// host; nvcc may fuse the recomputed r^2 into other FMAs than the scan's: a last-bit
-/// difference).
+/// The scan gathers the neighbours it finds (at most kRatesBatchMax) and sums them when, at the
+/// end of a range (a row of cells), any thread of the warp holds `batch` or more (any_lane): then
+/// every thread of the warp sums what it holds, together (batch 0: each pair is summed where
+/// it is found). Why: the 32 threads of a GPU warp execute together, and about a quarter of the
+/// candidates in the cells of size h around a particle are neighbours. Summing each pair where
+/// the scan finds it (DualSPHysics' loop) runs the pair terms whenever any thread of the warp
+/// has just found one, with most threads idle, so the warp pays the pair terms for nearly every
+/// candidate. Gathered and summed warp by warp, most threads of the warp have pairs to sum each
+/// time the warp pays for the terms. (A first version let each thread sum its own full batch,
+/// scanning on where it stopped: the threads went out of step across the rows, and on an H200
+/// it was 24% slower than no batch at all, docs/PERFORMANCE.md.) The neighbours, their order
+/// and the sums are those of a single loop, whatever the batch size (bit for bit on the host;
+/// nvcc may fuse the recomputed r^2 into other FMAs than the scan's: a last-bit difference).
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* cell_begin,
                                      const std::uint32_t* keys, const ParticleKind* kind,
@@ -270,17 +278,8 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
     });
   } else {
     std::uint32_t hits[kRatesBatchMax];
-    RangeCursor r = g.first_range(cell_begin, keys[a], at);
-    std::uint32_t b = r.b;
-    while (!r.done()) {
-      std::uint32_t found = 0;
-      do {
-        if (pair_offset(xa, ya, za, r.shift, v.pp[b]).r2 < m.support2 && b != a) hits[found++] = b;
-        if (++b == r.e) {
-          g.next_range(cell_begin, r);
-          b = r.b;
-        }
-      } while (found < batch && !r.done());
+    std::uint32_t found = 0;
+    const auto sum_hits = [&]() NETSPH_INLINE_LAMBDA {
       for (std::uint32_t k = 0; k < found; ++k) {
         const std::uint32_t nb = hits[k];
         const PosPress pb = v.pp[nb];
@@ -288,7 +287,18 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
                           nearest_image_shift(za - pb.z, pz));
         add_pair(nb, pair_offset(xa, ya, za, image, pb), pb.p);
       }
-    }
+      found = 0;
+    };
+    g.for_each_range(cell_begin, keys[a], at, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
+      for (std::uint32_t b = b0; b < b1; ++b) {
+        if (pair_offset(xa, ya, za, shift, v.pp[b]).r2 < m.support2 && b != a) {
+          hits[found++] = b;
+          if (found == kRatesBatchMax) sum_hits();  // full inside a row: this thread alone
+        }
+      }
+      if (any_lane(found >= batch)) sum_hits();
+    });
+    sum_hits();
   }
   if (fluid_a) {
     const Vec3f total{ax + m.gravity.x, ay + m.gravity.y, az + m.gravity.z};

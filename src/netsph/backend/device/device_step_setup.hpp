@@ -19,7 +19,9 @@ namespace netsph {
 /// given out 8 a thread at a time: To80 lets 3 blocks of 256 threads share one (nvcc fits
 /// every rates variant in 78-80 registers with at most 12 B of spills; uncapped they take
 /// 89-94, room for 2 blocks), To64 4 blocks (44-192 B of spills), None as many as the
-/// compiler likes.
+/// compiler likes. On an H200 (2026-12-04, docs/PERFORMANCE.md "CUDA") To64 was the fastest:
+/// 2.67e8 particle-steps/s at 1e7 particles, against 2.47e8 at To80 and 1.89e8 uncapped (the
+/// spills stay in L1; the occupancy they buy hides more of the pair loop's latency).
 enum class RatesRegisterCap : std::uint8_t { To80, To64, None };
 
 /// What a device step needs from the case (solver/device_setup.cpp builds it).
@@ -41,14 +43,20 @@ struct DeviceSetup {
   std::vector<DeviceBody> bodies;            ///< by body index, with their initial states
   std::vector<Vec3f> body_offsets, body_ghosts;  ///< body frame, by DeviceBody::offset_base + k
   ContactModel contact;
-  /// Neighbours a rates pass gathers before summing them, 0 (none: each pair summed where it
-  /// is found) to kRatesBatchMax (device_rates_particle; NETSPH_RATES_BATCH, device_setup.cpp).
-  std::uint32_t rates_batch = kRatesBatchMax;
+  /// How many neighbours a thread of the rates pass holds before its warp sums what it has
+  /// gathered, 1 to kRatesBatchMax, or 0: each pair summed where it is found
+  /// (device_rates_particle; NETSPH_RATES_BATCH, device_setup.cpp).
+  std::uint32_t rates_batch = kRatesBatchDefault;
   /// The registers a thread of the rates kernel may use (NETSPH_RATES_MAX_REGISTERS).
-  RatesRegisterCap rates_registers = RatesRegisterCap::To80;
-  /// The rates kernel scans only the cells within reach of each particle (GridIndex::reach);
-  /// false scans all 125 (NETSPH_RATES_TRIM=0).
-  bool rates_trimmed = true;
+  RatesRegisterCap rates_registers = RatesRegisterCap::To64;
+  /// true: the rates kernel scans only the cells within reach of each particle
+  /// (GridIndex::reach, NETSPH_RATES_TRIM=1); false (the default): all 125. Trimmed, a warp's
+  /// threads skip different cells and wait for each other; on an H200 the whole scan was 10%
+  /// faster (2.44e8 against 2.12e8 particle-steps/s at 1e7, batch 8).
+  bool rates_trimmed = false;
+  /// The CUDA step compiled with nvcc's --use_fast_math (backend/cuda/device_run_cuda_fast.cu;
+  /// NETSPH_CUDA_FAST_MATH=1); no effect on the host executor.
+  bool cuda_fast_math = false;
   /// Advances the bodies one stage (body_motion.hpp) from the loads of that stage: `states`
   /// holds the bodies' states on entry and receives the new ones; `sample` samples the fluid
   /// as the stage has it (DeviceStepper::sample_fluid); `water_loads` receives what the
