@@ -70,11 +70,12 @@ std::string cuda_unavailable() {
 }
 }  // namespace
 
-std::string resolve_backend(const std::string& requested) {
-  // "auto" stays on the CPU until the CUDA backend's parity tests have passed on a GPU
-  // (docs/PERFORMANCE.md, "CUDA"): a default must not be a path no one has seen run.
-  if (requested == "cpu" || requested == "auto" || requested == "host-device")
-    return requested == "auto" ? "cpu" : requested;
+std::string resolve_backend(const std::string& requested, bool distributed) {
+  // "auto": the CUDA backend where a device is usable (its parity tests passed on an H200 on
+  // 2026-12-04, docs/PERFORMANCE.md, "CUDA"), except in a distributed run (one GPU per process
+  // is not supported yet); otherwise the CPU.
+  if (requested == "auto") return !distributed && cuda_unavailable().empty() ? "cuda" : "cpu";
+  if (requested == "cpu" || requested == "host-device") return requested;
   if (requested == "cuda") {
     if (const std::string why = cuda_unavailable(); !why.empty())
       throw Error("--backend cuda", why + "; use --backend cpu");

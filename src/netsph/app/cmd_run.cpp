@@ -201,7 +201,7 @@ int run_command(const RunArgs& args) {
     const auto [text, source] = case_text(args.case_choice);
     record = case_record(text, source, overrides);
   }
-  const std::string backend = resolve_backend(args.backend);
+  const std::string backend = resolve_backend(args.backend, static_cast<bool>(coll));
   const int threads = apply_threads(args.threads);
   const std::filesystem::path out = restart ? std::filesystem::path(args.restart_dir)
                                     : args.out_dir.empty()

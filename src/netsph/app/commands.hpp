@@ -83,8 +83,9 @@ int apply_threads(int threads);
 
 /// Checks --backend; returns the backend that will run: "cpu", "cuda" (throws when netsph was
 /// built without CUDA or finds no usable device) or "host-device" (the CUDA backend's kernels
-/// on the CPU, slow: for checking). "auto" is "cpu" for now.
-std::string resolve_backend(const std::string& requested);
+/// on the CPU, slow: for checking). "auto" is "cuda" where a CUDA device is usable and the run
+/// is not `distributed` (under mpirun), else "cpu".
+std::string resolve_backend(const std::string& requested, bool distributed = false);
 /// The Simulation backend of a resolved name.
 StepBackend step_backend(const std::string& resolved);
 /// Refuses a case whose particles (estimated from its boxes, solver/memory_preflight.hpp)

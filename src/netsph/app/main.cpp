@@ -59,8 +59,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("-o,--output", run.out_dir, "output folder (default: out/<case name>)");
   run_cmd
       ->add_option("--backend", run.backend,
-                   "auto (the CPU for now), cpu, cuda, or host-device (the CUDA kernels on the "
-                   "CPU: slow, for checking)")
+                   "auto (cuda where a GPU is usable, else cpu), cpu, cuda, or host-device (the "
+                   "CUDA kernels on the CPU: slow, for checking)")
       ->capture_default_str();
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: all cores)")
       ->capture_default_str();
@@ -110,7 +110,8 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--steps", bench.steps, "timed steps per size")->capture_default_str();
   bench_cmd->add_option("--threads", bench.threads, "OpenMP threads (0: all cores)");
   bench_cmd
-      ->add_option("--backend", bench.backend, "auto (the CPU for now), cpu, cuda or host-device")
+      ->add_option("--backend", bench.backend,
+                   "auto (cuda where a GPU is usable, else cpu), cpu, cuda or host-device")
       ->capture_default_str();
   bench_cmd->add_option("--json", bench.json_path, "also write the results to this JSON file");
   bench_cmd->add_flag("--profile", bench.profile,
