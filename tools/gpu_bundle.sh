@@ -2,12 +2,14 @@
 # Collects what the GPU checks need into .gpu/ (git-ignored), so that a session lent a GPU
 # machine (whose image has CUDA but not Debian's libraries) runs them from a build made here:
 # the netsph binary, the device parity test, and every shared library they load except the C
-# library's own (the CUDA runtime is linked statically; the driver is the machine's).
+# library's own (the CUDA runtime is linked statically; the driver is the machine's), packed
+# into .gpu/bundle.tar.xz.
 #
 #   ./tools/gpu_bundle.sh [build-dir]        # default: build
 #
 # Then, through the device tool, with carry [".gpu"]: `bash tools/gpu_session.sh` (all the
 # checks, docs/PERFORMANCE.md "CUDA"), or by hand:
+#   tar -C .gpu -xJf .gpu/bundle.tar.xz
 #   export LD_LIBRARY_PATH=$PWD/.gpu/lib NETSPH_CASES_DIR=$PWD/cases
 #   .gpu/device_parity_test --gtest_filter='DeviceParity.Cuda*'
 #   .gpu/netsph bench --backend cuda --sizes 1e6,1e7,5e7 --steps 10 --json $OUT/bench.json
@@ -28,4 +30,16 @@ for f in .gpu/netsph .gpu/device_parity_test; do ldd "$f"; done |
   awk '/=> \// {print $3}' | sort -u |
   grep -v -E '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
   while read -r lib; do cp -L "$lib" .gpu/lib/; done
-du -sh .gpu
+# The C library and its loader, kept apart in .gpu/sys: used only if the machine's own C
+# library is older than the one this build needs (Debian 12's is 2.36; libstdc++ asks for
+# it), by running the programs through the carried loader (tools/gpu_session.sh).
+mkdir -p .gpu/sys
+for f in .gpu/netsph .gpu/device_parity_test; do ldd "$f"; done |
+  grep -o -E '/[^ ]*/(libc|libm|libpthread|libdl|librt|ld-linux[^/ ]*)\.so[.0-9]*' | sort -u |
+  while read -r lib; do cp -L "$lib" .gpu/sys/; done
+# Packed, so that what travels stays under the device tool's 64 MiB (two instantiations of the
+# step, exact and fast math, make the programs about 10 MB each; the libraries are 30 MB):
+# tools/gpu_session.sh unpacks it there.
+tar -C .gpu -cf - netsph device_parity_test lib sys | xz -T2 -6 > .gpu.bundle.tar.xz
+rm -rf .gpu && mkdir .gpu && mv .gpu.bundle.tar.xz .gpu/bundle.tar.xz
+du -sh .gpu/bundle.tar.xz
