@@ -460,7 +460,7 @@ std::string gpu_unavailable() {
 }
 
 // The rates kernel's variants a GPU session measures (device_rates_particle's batches,
-// the register caps, the untrimmed scan, fast math): each must match the CPU as the default does.
+// the register caps, the trimmed scan, fast math): each must match the CPU as the default does.
 // Poiseuille: periodic x.
 TEST(DeviceParity, CudaRatesKernelVariantsMatchTheCpuBackend) {
   SKIP_WITHOUT_GPU();
