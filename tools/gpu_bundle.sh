@@ -24,19 +24,18 @@ if ! grep -q "NETSPH_HAVE_CUDA:INTERNAL=ON\|CMAKE_CUDA_COMPILER:.*nvcc" "$build/
   exit 1
 fi
 rm -rf .gpu
-mkdir -p .gpu/lib
+mkdir -p .gpu/lib .gpu/sys
 cp "$build/src/netsph" "$build/tests/physics/device_parity_test" .gpu/
+# Every library the two programs load, into .gpu/lib; the C library and its loader apart, into
+# .gpu/sys: used only if the machine's own C library is older than the one this build needs
+# (Debian 12's is 2.36; libstdc++ asks for it), by running the programs through the carried
+# loader (tools/gpu_session.sh).
+c_library='/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so'
 for f in .gpu/netsph .gpu/device_parity_test; do ldd "$f"; done |
-  awk '/=> \// {print $3}' | sort -u |
-  grep -v -E '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
-  while read -r lib; do cp -L "$lib" .gpu/lib/; done
-# The C library and its loader, kept apart in .gpu/sys: used only if the machine's own C
-# library is older than the one this build needs (Debian 12's is 2.36; libstdc++ asks for
-# it), by running the programs through the carried loader (tools/gpu_session.sh).
-mkdir -p .gpu/sys
-for f in .gpu/netsph .gpu/device_parity_test; do ldd "$f"; done |
-  grep -o -E '/[^ ]*/(libc|libm|libpthread|libdl|librt|ld-linux[^/ ]*)\.so[.0-9]*' | sort -u |
-  while read -r lib; do cp -L "$lib" .gpu/sys/; done
+  grep -o -E '/[^ ]+\.so[.0-9]*' | sort -u |
+  while read -r lib; do
+    if [[ $lib =~ $c_library ]]; then cp -L "$lib" .gpu/sys/; else cp -L "$lib" .gpu/lib/; fi
+  done
 # Packed, so that what travels stays under the device tool's 64 MiB (two instantiations of the
 # step, exact and fast math, make the programs about 10 MB each; the libraries are 30 MB):
 # tools/gpu_session.sh unpacks it there.

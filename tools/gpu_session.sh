@@ -68,6 +68,9 @@ run() {  # run LIMIT NAME COMMAND...: the command's output in r/NAME.log, its st
   echo "   exit $last_rc after $((SECONDS)) s" | tee -a "$work/r/index.txt"
   pack
 }
+# A result's name for a list of settings: "NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=8" is
+# cuda_fast_math1_batch8.
+knob_name() { echo "$1" | sed 's/NETSPH_//g; s/RATES_//g; s/=//g; s/ /_/g' | tr 'A-Z' 'a-z'; }
 run 90 parity "${parity[@]}" --gtest_filter='DeviceParity.Cuda*'
 if [ "$last_rc" -ne 0 ] && [ -f "$work/r/parity.log" ]; then
   # The first failed test, or the one running when the process died, again with every kernel
@@ -86,7 +89,7 @@ fi
 # The whole parity suite again under the settings a default may move to (a few seconds each).
 for knobs in NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=0 NETSPH_RATES_BATCH=8 \
   NETSPH_RATES_TRIM=1; do
-  name=parity_$(echo "$knobs" | sed 's/NETSPH_//g; s/RATES_//g; s/=//g; s/ /_/g' | tr 'A-Z' 'a-z')
+  name=parity_$(knob_name "$knobs")
   # shellcheck disable=SC2086 # the list splits into its settings
   run 60 "$name" env $knobs "${parity[@]}" --gtest_filter='DeviceParity.Cuda*'
 done
@@ -104,12 +107,12 @@ profiler=$(command -v ncu || echo /usr/local/cuda/bin/ncu)
   --section SpeedOfLight --section Occupancy --section LaunchStats \
   --section MemoryWorkloadAnalysis --section WarpStateStats --section SchedulerStats \
   "${netsph[@]}" bench --backend cuda --sizes 1e6 --steps 2
-# Each a space-separated list of settings (NETSPH_ and RATES_ left out of the names).
+# Each a space-separated list of settings.
 for knobs in NETSPH_RATES_BATCH=0 NETSPH_RATES_BATCH=8 NETSPH_RATES_BATCH=16 \
   NETSPH_RATES_MAX_REGISTERS=80 NETSPH_RATES_MAX_REGISTERS=0 NETSPH_RATES_TRIM=1 \
   "NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=8" "NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=16" \
   "NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_MAX_REGISTERS=80"; do
-  name=bench_$(echo "$knobs" | sed 's/NETSPH_//g; s/RATES_//g; s/=//g; s/ /_/g' | tr 'A-Z' 'a-z')
+  name=bench_$(knob_name "$knobs")
   # shellcheck disable=SC2086 # the list splits into its settings
   run 45 "$name" env $knobs "${netsph[@]}" bench --backend cuda --sizes 1e7 --steps 10 --profile \
     --json "$work/r/$name.json"
