@@ -1,6 +1,7 @@
 // The interaction pass (sph/pair_interaction.hpp through backend/cpu/rates.cpp) against exact
 // properties: momentum conservation, the hydrostatic balance, the direction of the density
-// diffusion and the hydrostatic correction of Fourtakas et al. (2019).
+// diffusion and the hydrostatic correction of Fourtakas et al. (2019); and the pair terms against
+// their formulas evaluated in double precision.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 
 #include "netsph/backend/cpu/interaction_view.hpp"
 #include "netsph/backend/cpu/rates.hpp"
+#include "netsph/sph/pair_interaction.hpp"
 
 namespace netsph {
 namespace {
@@ -206,6 +208,107 @@ TEST(Interaction, UniformStateHasNoRates) {
     EXPECT_NEAR(b.acc[i].z, -9.81, 1e-4);
   }
   EXPECT_NEAR(b.red.max_visc_dt, 0, 1e-6);
+}
+
+}  // namespace
+}  // namespace netsph
+
+namespace netsph {
+namespace {
+
+/// The pair terms in double precision, each denominator divided on its own: the formulas of
+/// sph/pair_interaction.hpp's header comment, for checking the one-division arithmetic. The
+/// kernel factor is float's (near the support's edge (1 - q/2)^3 amplifies the round-off of
+/// r; that is the kernel's, not the division's). The scales are sums of the terms'
+/// magnitudes: dot products, pressures, continuity and diffusion can cancel, and round-off is
+/// relative to the parts, not to what is left.
+struct ExactPair {
+  double ax, ay, az, drho, visc_dt, vol_grad;
+  double acc_scale, drho_scale, visc_scale;
+};
+
+ExactPair exact_pair(const FluidModel& m, double rho_a, double press_a, const Neighbour& b,
+                     bool laminar) {
+  const double r2 = b.r2, r = std::sqrt(r2);
+  const double fac = kernel_grad_factor<WendlandC2>(m.kernel, std::sqrt(b.r2));
+  const double dvr =
+      double(b.vab.x) * b.rab.x + double(b.vab.y) * b.rab.y + double(b.vab.z) * b.rab.z;
+  const double dvr_c =
+      double(b.vab_c.x) * b.rab.x + double(b.vab_c.y) * b.rab.y + double(b.vab_c.z) * b.rab.z;
+  const double mu = m.kernel.h * dvr / (r2 + m.eta2);
+  const double p_part = (press_a + b.press_b) / (rho_a * b.rho_b);
+  const double pi_part =
+      !laminar && dvr < 0 ? -double(m.alpha) * m.eos.c0 * mu / ((rho_a + b.rho_b) / 2) : 0.0;
+  const double f_p = -double(b.mass_b) * (p_part + pi_part) * fac;
+  const double lam =
+      laminar ? b.mass_b * 4 * double(m.nu) * fac * r2 / ((r2 + m.eta2_laminar) * (rho_a + b.rho_b))
+              : 0.0;
+  const double v = std::sqrt(double(norm2(b.vab))), vc = std::sqrt(double(norm2(b.vab_c)));
+  const double continuity = b.mass_b * fac * dvr_c;
+  // Molteni & Colagrossi (2009)
+  const double diffusion =
+      b.fluid_b * double(m.delta_coef) * (rho_a - b.rho_b) * fac * b.mass_b / b.rho_b;
+  ExactPair e;
+  e.ax = b.rab.x * f_p + b.vab.x * lam;
+  e.ay = b.rab.y * f_p + b.vab.y * lam;
+  e.az = b.rab.z * f_p + b.vab.z * lam;
+  e.drho = continuity + diffusion;
+  e.visc_dt = std::abs(mu);
+  e.vol_grad = b.mass_b * fac / b.rho_b;
+  const double mu_scale = m.kernel.h * v * r / (r2 + m.eta2);
+  const double p_scale = (std::abs(press_a) + std::abs(b.press_b)) / (rho_a * b.rho_b);
+  const double pi_scale = laminar ? 0.0 : m.alpha * m.eos.c0 * mu_scale / ((rho_a + b.rho_b) / 2);
+  e.acc_scale = (p_scale + pi_scale) * std::abs(b.mass_b * fac) * r + std::abs(lam) * v;
+  e.drho_scale = b.mass_b * std::abs(fac) * vc * r + std::abs(diffusion);
+  e.visc_scale = mu_scale;
+  return e;
+}
+
+// fluid_pair_rates inverts the product of its three denominators once and recovers each
+// reciprocal by multiplying (pair_interaction.hpp says why): every term must stay within
+// float round-off of the formula divided term by term, over pairs spread through the support,
+// approaching and receding, for both viscosity models. A wrong recovered reciprocal is off by
+// a factor of rho or h^2, far outside the tolerance.
+TEST(Interaction, PairTermsMatchTheFormulasDividedTermByTerm) {
+  for (const bool laminar : {false, true}) {
+    FluidModelInput in = base_input(3, 0.01);
+    in.viscosity = laminar ? ViscosityModel::Laminar : ViscosityModel::Artificial;
+    in.nu = 1e-3;  // large enough for the laminar term to matter next to the pressure
+    const FluidModel m = make_fluid_model(in);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    double worst = 0;
+    int pairs = 0;
+    for (int k = 0; k < 4000; ++k) {
+      const Vec3f rab(Vec3d{unit(rng), unit(rng), unit(rng)} * (2.0 * m.kernel.h));
+      const Real r2 = norm2(rab);
+      if (!(r2 < m.support2) || r2 == 0) continue;
+      const Real rho_a = Real(1000 + 30 * unit(rng)), rho_b = Real(1000 + 30 * unit(rng));
+      const Vec3f vab(Vec3d{unit(rng), unit(rng), unit(rng)} * 0.5);
+      const Neighbour nb{rab,    r2,     vab, vab * Real(0.5), rho_b, m.eos.pressure(rho_b),
+                         m.mass, Real(1)};
+      const PairCentre a = pair_centre(rho_a, m.eos.pressure(rho_a));
+      const PairRates g =
+          laminar
+              ? fluid_pair_rates<WendlandC2, ViscosityModel::Laminar, DensityDiffusion::Molteni>(
+                    m, a, nb)
+              : fluid_pair_rates<WendlandC2, ViscosityModel::Artificial, DensityDiffusion::Molteni>(
+                    m, a, nb);
+      const ExactPair e = exact_pair(m, a.rho, a.press, nb, laminar);
+      const auto rel = [](double got, double want, double scale) {
+        return std::abs(got - want) / std::max(scale, 1e-300);
+      };
+      worst = std::max({worst, rel(g.acc.x, e.ax, e.acc_scale), rel(g.acc.y, e.ay, e.acc_scale),
+                        rel(g.acc.z, e.az, e.acc_scale), rel(g.drho, e.drho, e.drho_scale),
+                        rel(g.visc_dt, e.visc_dt, e.visc_scale),
+                        rel(g.vol_grad, e.vol_grad, std::abs(e.vol_grad))});
+      ++pairs;
+    }
+    EXPECT_GT(pairs, 1500);  // half the cube's points lie inside the support
+    // float's unit round-off is 6e-8; a dozen operations, each rounded, stay below 1e-6
+    EXPECT_LT(worst, 1e-6) << (laminar ? "laminar" : "artificial");
+    EXPECT_GT(worst, 0.0) << "float terms equal to double ones: the comparison is not running";
+  }
 }
 
 }  // namespace

@@ -51,11 +51,25 @@ struct Neighbour {
   Real fluid_b;  ///< 1 when b is fluid, 0 otherwise (multiplies the delta-SPH term)
 };
 
+/// Particle a's own fields in its pair terms: 1/rho_a is taken once a particle, not once a pair.
+struct PairCentre {
+  Real rho;      ///< kg/m^3
+  Real press;    ///< Pa
+  Real inv_rho;  ///< 1 / rho, m^3/kg
+};
+
+NETSPH_HD PairCentre pair_centre(Real rho, Real press) {
+  return {rho, press, Real(1) / rho};
+}
+
 /// What one neighbour b adds to particle a's rates.
 struct PairRates {
   Vec3f acc;     ///< m/s^2
   Real drho;     ///< kg/m^3/s
   Real visc_dt;  ///< |h v_ab.r_ab / (r^2 + eta^2)|, 1/s (the sums keep the maximum)
+  /// V_b F = (m_b / rho_b) (1/r) dW/dr, 1/m^2: grad_a W_ab weighted by b's volume, for the
+  /// shifting sums (Lind et al. 2012) grad C_a = sum V_b F r_ab and div r_a = -sum V_b F r^2.
+  Real vol_grad;
 };
 
 // The pair functions take the neighbour by value, return by value and use no Vec3 member
@@ -64,40 +78,58 @@ struct PairRates {
 // GCC 12 from vectorising the pair loops at all (docs/PERFORMANCE.md, "Where the time goes").
 
 /// Fluid particle a: continuity, momentum, viscosity and density diffusion from neighbour b.
+///
+/// One division a pair. The terms divide by rho_b (pressure, diffusion, V_b), by
+/// r^2 + eta^2 (mu) and by the viscosity's density mean; an IEEE float division costs a GPU
+/// thread about ten instructions and a slow-path test, a multiplication one. So the three
+/// denominators are multiplied together, inverted once, and each reciprocal is recovered by
+/// multiplying the inverse by the other two: 1/x = (1/(x y z)) y z. Each reciprocal is then a
+/// few ulps from the divided one, far inside float's round-off of the sums; the product stays
+/// well within float's range (1e-16 to 1e12 for h from 0.1 mm to 10 m, rho ~ 1e3).
 template <class Kernel, ViscosityModel Visc, DensityDiffusion Diff>
-NETSPH_HD PairRates fluid_pair_rates(const FluidModel& m, Real rho_a, Real press_a,
-                                     const Neighbour b) {
+NETSPH_HD PairRates fluid_pair_rates(const FluidModel& m, const PairCentre a, const Neighbour b) {
   const Real r = std::sqrt(b.r2);
   const Real fac = kernel_grad_factor<Kernel>(m.kernel, r);  // grad W = fac * r_ab
   const Real dot_vr = dot(b.vab, b.rab);
   const Real dot_vr_c = dot(b.vab_c, b.rab);
-  const Real inv_r2_eta = Real(1) / (b.r2 + m.eta2);
+
+  // The viscosity's denominator besides r^2 + eta^2: rho_a + rho_b (artificial, twice the
+  // mean) or (rho_a + rho_b)(r^2 + eta_laminar^2) (laminar).
+  Real visc_den = a.rho + b.rho_b;
+  if constexpr (Visc == ViscosityModel::Laminar) visc_den *= b.r2 + m.eta2_laminar;
+  const Real r2_eta = b.r2 + m.eta2;
+  const Real both = r2_eta * visc_den;
+  const Real inv_all = Real(1) / (both * b.rho_b);
+  const Real inv_rho_b = inv_all * both;
+  const Real inv_both = inv_all * b.rho_b;
+  const Real inv_r2_eta = inv_both * visc_den;
+  const Real inv_visc_den = inv_both * r2_eta;
 
   // Continuity: m_b v_ab . grad W.
   Real drho = b.mass_b * fac * dot_vr_c;
+  const Real vol_grad = b.mass_b * inv_rho_b * fac;
 
   // Pressure, plus artificial viscosity for approaching pairs.
-  Real p_term = (press_a + b.press_b) / (rho_a * b.rho_b);
+  Real p_term = (a.press + b.press_b) * (a.inv_rho * inv_rho_b);
   const Real mu = m.kernel.h * dot_vr * inv_r2_eta;
   if constexpr (Visc == ViscosityModel::Artificial) {
-    const Real pi_ab = -m.alpha * m.eos.c0 * mu * Real(2) / (rho_a + b.rho_b);
+    const Real pi_ab = -m.alpha * m.eos.c0 * mu * Real(2) * inv_visc_den;
     p_term += dot_vr < Real(0) ? pi_ab : Real(0);
   }
   const Real f_p = -b.mass_b * p_term * fac;
   Real ax = b.rab.x * f_p, ay = b.rab.y * f_p, az = b.rab.z * f_p;
   if constexpr (Visc == ViscosityModel::Laminar) {
-    const Real lam =
-        b.mass_b * Real(4) * m.nu * fac * b.r2 / ((b.r2 + m.eta2_laminar) * (rho_a + b.rho_b));
+    const Real lam = b.mass_b * Real(4) * m.nu * fac * b.r2 * inv_visc_den;
     ax += b.vab.x * lam, ay += b.vab.y * lam, az += b.vab.z * lam;
   }
 
-  // Density diffusion towards fluid neighbours.
+  // Density diffusion towards fluid neighbours: delta_coef (rho_a - rho_b) F m_b / rho_b.
   if constexpr (Diff != DensityDiffusion::None) {
-    Real drho_ab = rho_a - b.rho_b;
+    Real drho_ab = a.rho - b.rho_b;
     if constexpr (Diff == DensityDiffusion::Fourtakas) drho_ab -= dot(m.hydro_grad, b.rab);
-    drho += b.fluid_b * m.delta_coef * drho_ab * fac * b.mass_b / b.rho_b;
+    drho += b.fluid_b * m.delta_coef * drho_ab * vol_grad;
   }
-  return {{ax, ay, az}, drho, mu < Real(0) ? -mu : mu};
+  return {{ax, ay, az}, drho, mu < Real(0) ? -mu : mu, vol_grad};
 }
 
 /// Boundary particle a under DBC (Crespo et al. 2007): only continuity, from fluid neighbours.
@@ -109,7 +141,7 @@ NETSPH_HD PairRates boundary_pair_rates(const FluidModel& m, const Neighbour b) 
   const Real dot_vr_c = dot(b.vab_c, b.rab);
   const Real drho = b.fluid_b * b.mass_b * fac * dot_vr_c;
   const Real mu = m.kernel.h * dot_vr / (b.r2 + m.eta2);
-  return {{Real(0), Real(0), Real(0)}, drho, (mu < Real(0) ? -mu : mu) * b.fluid_b};
+  return {{Real(0), Real(0), Real(0)}, drho, (mu < Real(0) ? -mu : mu) * b.fluid_b, Real(0)};
 }
 
 }  // namespace netsph

@@ -49,7 +49,7 @@ inline FluidResult fluid_batch_sums(const FluidModel& model, const InteractionVi
   // reference stay in the loop as masked loads that GCC 12 cannot vectorise.
   const FluidModel m = model;
   const Real vxa = v.vx[a], vya = v.vy[a], vza = v.vz[a];
-  const Real rho_a = v.rho[a], press_a = v.press[a];
+  const PairCentre centre = pair_centre(v.rho[a], v.press[a]);
   const Real* __restrict vx = batch.carried[kVx];
   const Real* __restrict vy = batch.carried[kVy];
   const Real* __restrict vz = batch.carried[kVz];
@@ -78,12 +78,11 @@ inline FluidResult fluid_batch_sums(const FluidModel& model, const InteractionVi
                        press[k],
                        m.mass,
                        fluid[k]};
-    const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
+    const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, centre, nb);
     ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
     vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
     if constexpr (Shift) {
-      // grad_a W = F r_ab; V_b = m / rho_b (Lind et al. 2012).
-      const Real vf = m.mass / rho[k] * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
+      const Real vf = s.vol_grad;
       gx += vf * dx, gy += vf * dy, gz += vf * dz;
       div -= vf * r2;
     }
@@ -198,7 +197,7 @@ inline RateSums body_batch_sums(const FluidModel& model, const InteractionView& 
   // the solid's own velocity
   const Real cxa = v.continuity_vx()[a], cya = v.continuity_vy()[a], cza = v.continuity_vz()[a];
   const Real p_bg = m.eos.p_background;
-  const Real rho_a = v.rho[a], press_a = v.press[a] - p_bg;
+  const PairCentre centre = pair_centre(v.rho[a], v.press[a] - p_bg);
   const Real* __restrict vx = batch.carried[kVx];
   const Real* __restrict vy = batch.carried[kVy];
   const Real* __restrict vz = batch.carried[kVz];
@@ -215,8 +214,7 @@ inline RateSums body_batch_sums(const FluidModel& model, const InteractionView& 
                        press[k] - p_bg,
                        m.mass,
                        Real(1)};
-    const PairRates s =
-        fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, rho_a, press_a, nb);
+    const PairRates s = fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, centre, nb);
     ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
     vdt = vdt > s.visc_dt ? vdt : s.visc_dt;  // not std::max: its references defeat omp simd
   }

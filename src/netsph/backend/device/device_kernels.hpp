@@ -216,6 +216,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
   const bool fluid_a = ka == ParticleKind::Fluid, body_a = ka == ParticleKind::Body;
   // A body sees gauge pressures (backend/cpu/rates.cpp, body_sums, says why).
   const Real p_bg = m.eos.p_background;
+  const PairCentre centre = pair_centre(rho_a, body_a ? press_a - p_bg : press_a);
   Real ax = 0, ay = 0, az = 0, dr = 0, vdt = 0, gx = 0, gy = 0, gz = 0, div = 0;
   const Real px = static_cast<Real>(g.period[0]), py = static_cast<Real>(g.period[1]),
              pz = static_cast<Real>(g.period[2]);
@@ -235,11 +236,11 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
                          press_b,
                          m.mass,
                          fluid_b};
-      const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, rho_a, press_a, nb);
+      const PairRates s = fluid_pair_rates<Kernel, Visc, Diff>(m, centre, nb);
       ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
       vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
       if constexpr (Shift) {
-        const Real vf = m.mass / ub.rho * kernel_grad_factor<Kernel>(m.kernel, std::sqrt(r2));
+        const Real vf = s.vol_grad;
         gx += vf * dx, gy += vf * dy, gz += vf * dz;
         div -= vf * r2;
       }
@@ -255,9 +256,9 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
                          press_b - p_off,
                          m.mass,
                          fluid_b};
-      const PairRates s = body_a ? fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(
-                                       m, rho_a, press_a - p_off, nb)
-                                 : boundary_pair_rates<Kernel>(m, nb);
+      const PairRates s =
+          body_a ? fluid_pair_rates<Kernel, Visc, DensityDiffusion::None>(m, centre, nb)
+                 : boundary_pair_rates<Kernel>(m, nb);
       ax += s.acc.x, ay += s.acc.y, az += s.acc.z, dr += s.drho;
       vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
     }
