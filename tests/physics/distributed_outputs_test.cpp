@@ -105,7 +105,14 @@ Csv read_csv(const fs::path& file) {
 }
 
 /// Every column of `b` within rel of `a`'s largest magnitude in that column (NaN where `a`
-/// has NaN); the wall time is the one column allowed to differ.
+/// has NaN); the wall time is the one column allowed to differ. dt_force_limit, sqrt(h / max
+/// |a|), follows one particle's acceleration, a sum of pair forces that nearly cancel (in a
+/// resting column each is about depth / h times their sum): where that particle lies near a cut
+/// between the slabs, its neighbours are summed in another order on three processes, and the
+/// sum moves by float's round-off times that ratio, up to ~1e-5. It gets 1e-5. (It was the
+/// same to the bit in this case until the pair terms took one division a pair, 223fa39; since,
+/// under the sanitizers' build, the largest acceleration of one step sits near a cut and
+/// differs by 1.7e-6.)
 void expect_csv_close(const fs::path& a_file, const fs::path& b_file, double rel) {
   const Csv a = read_csv(a_file), b = read_csv(b_file);
   ASSERT_EQ(a.names, b.names) << a_file;
@@ -122,7 +129,8 @@ void expect_csv_close(const fs::path& a_file, const fs::path& b_file, double rel
         EXPECT_TRUE(std::isnan(y)) << a_file.filename() << " row " << r << " " << a.names[c];
         continue;
       }
-      EXPECT_LE(std::fabs(x - y), rel * scale)
+      const double tol = a.names[c] == "dt_force_limit" ? std::max(rel, 1e-5) : rel;
+      EXPECT_LE(std::fabs(x - y), tol * scale)
           << a_file.filename() << " row " << r << " " << a.names[c] << ": " << x << " vs " << y;
     }
   }
