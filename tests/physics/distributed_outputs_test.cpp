@@ -111,8 +111,8 @@ Csv read_csv(const fs::path& file) {
 /// between the slabs, its neighbours are summed in another order on three processes, and the
 /// sum moves by float's round-off times that ratio, up to ~1e-5. It gets 1e-5. (It was the
 /// same to the bit in this case until the pair terms took one division a pair, 223fa39; since,
-/// under the sanitizers' build, the largest acceleration of one step sits near a cut and
-/// differs by 1.7e-6.)
+/// under the sanitizers' build, it differs by 1.7e-6 at one step, as the other trajectory can
+/// put the largest acceleration near a cut; the particle was not traced.)
 void expect_csv_close(const fs::path& a_file, const fs::path& b_file, double rel) {
   const Csv a = read_csv(a_file), b = read_csv(b_file);
   ASSERT_EQ(a.names, b.names) << a_file;
