@@ -210,12 +210,6 @@ TEST(Interaction, UniformStateHasNoRates) {
   EXPECT_NEAR(b.red.max_visc_dt, 0, 1e-6);
 }
 
-}  // namespace
-}  // namespace netsph
-
-namespace netsph {
-namespace {
-
 /// The pair terms in double precision, each denominator divided on its own: the formulas of
 /// sph/pair_interaction.hpp's header comment, for checking the one-division arithmetic. The
 /// kernel factor is float's (near the support's edge (1 - q/2)^3 amplifies the round-off of
