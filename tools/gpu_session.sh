@@ -13,7 +13,7 @@
 #      1e7 benchmark with the rates kernel's variants (docs/PERFORMANCE.md, "CUDA"): batches
 #      (NETSPH_RATES_BATCH, 0: each pair summed where it is found), register caps
 #      (NETSPH_RATES_MAX_REGISTERS=0 or 80: 2 or 3 blocks a multiprocessor instead of 4 at 64),
-#      only the cells within reach scanned (NETSPH_RATES_TRIM=1), and some with fast math
+#      and some with fast math
 #   4. the paper's flexible net at full resolution (1.35e8 particles): `netsph check` builds
 #      it, steps it on the GPU and reports its memory and the time per simulated second, as
 #      built and with fast math
@@ -87,8 +87,7 @@ if [ "$last_rc" -ne 0 ] && [ -f "$work/r/parity.log" ]; then
   skip_runs=1
 fi
 # The whole parity suite again under the settings a default may move to (a few seconds each).
-for knobs in NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=0 NETSPH_RATES_BATCH=8 \
-  NETSPH_RATES_TRIM=1; do
+for knobs in NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=0 NETSPH_RATES_BATCH=8; do
   name=parity_$(knob_name "$knobs")
   # shellcheck disable=SC2086 # the list splits into its settings
   run 60 "$name" env $knobs "${parity[@]}" --gtest_filter='DeviceParity.Cuda*'
@@ -109,7 +108,7 @@ profiler=$(command -v ncu || echo /usr/local/cuda/bin/ncu)
   "${netsph[@]}" bench --backend cuda --sizes 1e6 --steps 2
 # Each a space-separated list of settings.
 for knobs in NETSPH_RATES_BATCH=0 NETSPH_RATES_BATCH=8 NETSPH_RATES_BATCH=16 \
-  NETSPH_RATES_MAX_REGISTERS=80 NETSPH_RATES_MAX_REGISTERS=0 NETSPH_RATES_TRIM=1 \
+  NETSPH_RATES_MAX_REGISTERS=80 NETSPH_RATES_MAX_REGISTERS=0 \
   "NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=8" "NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_BATCH=16" \
   "NETSPH_CUDA_FAST_MATH=1 NETSPH_RATES_MAX_REGISTERS=80"; do
   name=bench_$(knob_name "$knobs")

@@ -163,28 +163,23 @@ TEST(DeviceParity, HostInReverseAndShuffledOrderMatchesTheCpuBackend) {
 }
 
 // The rates pass gathers a batch of neighbours before summing them (device_rates_particle,
-// for a GPU warp's sake), and scans only the cells within reach of the particle
-// (GridIndex::first_range with a point); the neighbours, their order and so the sums must be
-// the same for every batch size, trimmed or not, bit for bit, as for the loop over every
-// candidate cell that sums each pair where it finds it (batch 0, untrimmed). A batch that ends
-// inside a range, on a range's last candidate or across a periodic boundary (x in Poiseuille,
-// y in the 3D channel) each resume the scan differently; a trimmed range ends where the whole
-// one did not.
+// for a GPU warp's sake); the neighbours, their order and so the sums must be the same for
+// every batch size, bit for bit, as for the loop that sums each pair where it finds it
+// (batch 0). A batch that ends inside a range, on a range's last candidate or across a
+// periodic boundary (x in Poiseuille, y in the 3D channel) each resume the scan differently.
 void expect_same_for_every_batch(const std::string& name, const std::vector<std::string>& overrides,
                                  int steps) {
   SCOPED_TRACE(name);
   const CaseSpec spec = test::load_case(name, overrides);
   std::optional<Simulation> plain;
   {
-    const ScopedEnv batch("NETSPH_RATES_BATCH", "0"), trim("NETSPH_RATES_TRIM", "0");
+    const ScopedEnv batch("NETSPH_RATES_BATCH", "0");
     plain.emplace(spec, StepBackend::HostDevice);
   }
   for (int s = 0; s < steps; ++s) plain->step();
-  for (const auto& [size, trimmed] :
-       {std::pair{"0", "1"}, std::pair{"1", "1"}, std::pair{"3", "1"}, std::pair{"16", "1"},
-        std::pair{"32", "1"}, std::pair{"32", "0"}}) {
-    SCOPED_TRACE(std::string("batch ") + size + ", trimmed " + trimmed);
-    const ScopedEnv batch("NETSPH_RATES_BATCH", size), trim("NETSPH_RATES_TRIM", trimmed);
+  for (const char* size : {"1", "3", "12", "16", "32"}) {
+    SCOPED_TRACE(std::string("batch ") + size);
+    const ScopedEnv batch("NETSPH_RATES_BATCH", size);
     Simulation batched(spec, StepBackend::HostDevice);
     for (int s = 0; s < steps; ++s) batched.step();
     const Difference d = test::state_difference(*plain, batched);
@@ -230,9 +225,8 @@ TEST(DeviceParity, RatesKernelSettingsOutsideTheirRangeAreAClearError) {
                            "NETSPH_RATES_MAX_REGISTERS is '48': it must be a whole number 0 (no "
                            "cap), 64 or 80");
   expect_environment_error("NETSPH_CUDA_FAST_MATH", "yes", "NETSPH_CUDA_FAST_MATH is 'yes'");
-  expect_environment_error("NETSPH_RATES_TRIM", "2",
-                           "NETSPH_RATES_TRIM is '2': it must be a whole number 0 (all 125 "
-                           "cells) or 1 (the cells within reach)");
+  expect_environment_error("NETSPH_RATES_TRIM", "1",
+                           "NETSPH_RATES_TRIM is '1': the trimmed rates scan was removed");
 }
 
 // The whole run on the device step: outputs (snapshots, series, probes, nets, summary.json)
@@ -460,7 +454,7 @@ std::string gpu_unavailable() {
 }
 
 // The rates kernel's variants a GPU session measures (device_rates_particle's batches,
-// the register caps, the trimmed scan, fast math): each must match the CPU as the default does.
+// the register caps, fast math): each must match the CPU as the default does.
 // Poiseuille: periodic x.
 TEST(DeviceParity, CudaRatesKernelVariantsMatchTheCpuBackend) {
   SKIP_WITHOUT_GPU();
@@ -468,7 +462,7 @@ TEST(DeviceParity, CudaRatesKernelVariantsMatchTheCpuBackend) {
        {std::pair{"NETSPH_RATES_BATCH", "0"}, std::pair{"NETSPH_RATES_BATCH", "1"},
         std::pair{"NETSPH_RATES_BATCH", "8"}, std::pair{"NETSPH_RATES_BATCH", "32"},
         std::pair{"NETSPH_RATES_MAX_REGISTERS", "80"}, std::pair{"NETSPH_RATES_MAX_REGISTERS", "0"},
-        std::pair{"NETSPH_RATES_TRIM", "1"}, std::pair{"NETSPH_CUDA_FAST_MATH", "1"}}) {
+        std::pair{"NETSPH_CUDA_FAST_MATH", "1"}}) {
     SCOPED_TRACE(std::string(name) + "=" + value);
     const ScopedEnv scoped(name, value);
     expect_parity(compare("poiseuille2d.toml", kPoiseuille, 100, StepBackend::Cuda));

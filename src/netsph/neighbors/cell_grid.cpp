@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "netsph/core/growth.hpp"
@@ -60,18 +59,7 @@ void CellGrid::configure(const Vec3d& lo, const Vec3d& hi, double support, doubl
   index_.inv_cell = inv_cell_;
   index_.period = period_;
   index_.dims = dims_;
-  for (int a = 0; a < 3; ++a) {
-    index_.n[a] = n_[a], index_.periodic[a] = periodic_[a];
-    index_.cell[a] = static_cast<float>(cell_[a]);
-  }
-  // A trimmed scan (GridIndex::first_range with a point) keeps the cells within the support
-  // of the point plus the displacement a candidate may have made since the sort. The margin
-  // covers the float round-off of the point's offset in its cell (a few ulp of the domain
-  // size) and of the reach itself, so that no pair within the support is ever left out.
-  double extent = 0;
-  for (int a = 0; a < 3; ++a) extent = std::max(extent, std::abs(hi[a] - lo[a]));
-  index_.reach = static_cast<float>((support + max_displacement_) * (1 + 1e-3) +
-                                    16 * extent * std::numeric_limits<float>::epsilon());
+  for (int a = 0; a < 3; ++a) index_.n[a] = n_[a], index_.periodic[a] = periodic_[a];
 }
 
 std::int64_t CellGrid::cell_of(const Vec3d& p) const {

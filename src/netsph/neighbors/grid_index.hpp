@@ -26,18 +26,11 @@ struct RangeCursor {
   Vec3f shift{};
   int cx = 0, cy = 0, cz = 0;   ///< the cell searched around
   int dz = 0, dy = 0, run = 0;  ///< the range's z and y rows and x run (0, 1, 2)
-  /// A trimmed scan (GridIndex::first_range with a point): the point's offset from the low
-  /// corner of cell (cx, cy, cz) along y and z, m, and its squared distances along x to the
-  /// cells 2 and 1 before and 1 and 2 after it, m^2 (the same for every row).
-  bool trim = false;
-  float fy = 0, fz = 0;
-  float x_gap2[4] = {0, 0, 0, 0};
   NETSPH_HD bool done() const { return b == e; }
 };
 
 struct GridIndex {
   static constexpr int kSearchCells = 2;  ///< CellGrid::kSearchCells
-  static_assert(kSearchCells == 2, "next_range's trim drops at most two cells at each row end");
   Vec3d origin{};
   Vec3d upper{};
   Vec3d inv_cell{};
@@ -45,11 +38,6 @@ struct GridIndex {
   int n[3] = {1, 1, 1};
   bool periodic[3] = {false, false, false};
   int dims = 3;
-  float cell[3] = {1, 1, 1};  ///< cell size per axis, m (1 / inv_cell, in float for the trim)
-  /// The distance from a point within which a trimmed scan keeps every cell: the support plus
-  /// the largest displacement since the sort (a candidate lies within that of its cell) plus a
-  /// round-off margin (CellGrid::configure). 0: scans are not trimmed.
-  float reach = 0;
 
   NETSPH_HD std::uint32_t cells() const {
     return static_cast<std::uint32_t>(n[0]) * static_cast<std::uint32_t>(n[1]) *
@@ -109,31 +97,9 @@ struct GridIndex {
   }
 
   /// The first non-empty candidate range of cell `c` (done() if it has none). With
-  /// next_range, a scan that must stop and resume (device_rates_particle gathers a batch of
-  /// neighbours, sums it, then scans on); for_each_range is the whole scan in one call.
+  /// next_range, a scan that can stop and resume; for_each_range is the whole scan in one call.
   NETSPH_HD RangeCursor first_range(const std::uint32_t* cell_begin, std::uint32_t c) const {
     RangeCursor r = cursor_at(c);
-    next_range(cell_begin, r);
-    return r;
-  }
-
-  /// The same for a scan that needs the candidates within the support of one point only, `at`
-  /// (m, from the origin, in cell c, or carried up to the largest displacement out of it since
-  /// the sort, and not wrapped since): the rows and cells farther from it than `reach` are left
-  /// out (where reach is 0, none). Of the 125 cells of a 3D search about two thirds are kept (a
-  /// ball of radius 2h touches fewer cells of 1.05 h than its bounding cube holds), so a third
-  /// fewer candidates are tested; the ranges kept are those of the whole scan, cut, in the same
-  /// order, and every particle within the support is in them.
-  NETSPH_HD RangeCursor first_range(const std::uint32_t* cell_begin, std::uint32_t c,
-                                    Vec3f at) const {
-    RangeCursor r = cursor_at(c);
-    if (reach > 0) {
-      r.trim = true;
-      r.fy = offset_in_cell(1, at.y, r.cy), r.fz = offset_in_cell(2, at.z, r.cz);
-      const float fx = offset_in_cell(0, at.x, r.cx);
-      r.x_gap2[0] = square(gap(-2, fx, cell[0])), r.x_gap2[1] = square(gap(-1, fx, cell[0]));
-      r.x_gap2[2] = square(gap(1, fx, cell[0])), r.x_gap2[3] = square(gap(2, fx, cell[0]));
-    }
     next_range(cell_begin, r);
     return r;
   }
@@ -170,24 +136,8 @@ struct GridIndex {
         r.run = 2;  // the whole y row is outside
         continue;
       }
-      // The row's cells [lo, hi], numbered as if the x axis went on past its ends: all 2R + 1,
-      // or in a trimmed scan those within reach of the point.
+      // The row's cells [lo, hi], numbered as if the x axis went on past its ends.
       int lo = x0, hi = x1;
-      if (r.trim) {
-        const float gz = gap(r.dz, r.fz, cell[2]);
-        const float gy = dims == 2 ? 0.0f : gap(r.dy, r.fy, cell[1]);
-        const float rest = reach * reach - gz * gz - gy * gy;
-        if (!(rest > 0)) {
-          r.run = 2;  // the whole row is out of reach
-          continue;
-        }
-        // The end cells out of reach dropped, without branches (a cell farther out goes only
-        // with the one before it; the point's own cell always stays).
-        const bool out_l2 = r.x_gap2[0] >= rest, out_l1 = out_l2 & (r.x_gap2[1] >= rest);
-        const bool out_h2 = r.x_gap2[3] >= rest, out_h1 = out_h2 & (r.x_gap2[2] >= rest);
-        lo += static_cast<int>(out_l2) + static_cast<int>(out_l1);
-        hi -= static_cast<int>(out_h2) + static_cast<int>(out_h1);
-      }
       // The run's part of them (the wrapped low end, the grid, the wrapped high end), moved
       // into the grid.
       float sx = 0;
@@ -222,14 +172,6 @@ struct GridIndex {
       visit(r.b, r.e, r.shift);
   }
 
-  /// The same, trimmed to the reach of point `at` in cell c (first_range with a point).
-  template <class Visit>
-  NETSPH_HD void for_each_range(const std::uint32_t* cell_begin, std::uint32_t c, Vec3f at,
-                                Visit&& visit) const {
-    for (RangeCursor r = first_range(cell_begin, c, at); !r.done(); next_range(cell_begin, r))
-      visit(r.b, r.e, r.shift);
-  }
-
  private:
   NETSPH_HD RangeCursor cursor_at(std::uint32_t c) const {
     const std::uint32_t nx = static_cast<std::uint32_t>(n[0]);
@@ -239,24 +181,6 @@ struct GridIndex {
     r.cz = static_cast<int>(c / nxy);
     r.dz = -kSearchCells, r.dy = dims == 2 ? 0 : -kSearchCells, r.run = -1;
     return r;
-  }
-
-  /// Coordinate x (m, from the origin) on axis a as an offset from the low side of cell i.
-  /// Positions are not wrapped between two sorts, so a point carried across a periodic end
-  /// since the sort stays next to its cell.
-  NETSPH_HD float offset_in_cell(int a, float x, int i) const {
-    return x - static_cast<float>(i) * cell[a];
-  }
-
-  NETSPH_HD static float square(float x) { return x * x; }
-
-  /// The distance along one axis from offset f (m, from the low side of the searched cell) to
-  /// the cell d cells away, each `size` wide.
-  NETSPH_HD static float gap(int d, float f, float size) {
-    const float below = static_cast<float>(d) * size - f,
-                above = f - static_cast<float>(d + 1) * size;
-    const float g = below > above ? below : above;
-    return g > 0 ? g : 0.0f;
   }
 };
 

@@ -30,11 +30,9 @@ long whole_number_from_environment(const char* name, long fallback, Valid valid,
 /// NETSPH_RATES_BATCH: how many neighbours a thread of a device rates pass holds before its warp
 /// sums them (device_rates_particle; 0: each pair summed where it is found);
 /// NETSPH_RATES_MAX_REGISTERS: 64 (the default), 80 or 0 (none) caps the rates kernel's
-/// registers (DeviceSetup::rates_registers); NETSPH_RATES_TRIM: 1 scans only the cells within
-/// reach, 0 (the default) every candidate cell (DeviceSetup::rates_trimmed);
-/// NETSPH_CUDA_FAST_MATH: 1 runs the CUDA step compiled with --use_fast_math
-/// (DeviceSetup::cuda_fast_math). Knobs for measuring the GPU, not physical settings: the
-/// results are the same for every value (fast math: to float round-off).
+/// registers (DeviceSetup::rates_registers); NETSPH_CUDA_FAST_MATH: 1 runs the CUDA step compiled
+/// with --use_fast_math (DeviceSetup::cuda_fast_math). Knobs for measuring the GPU, not physical
+/// settings: the results are the same for every value (fast math: to float round-off).
 void rates_kernel_from_environment(DeviceSetup& s) {
   s.rates_batch = static_cast<std::uint32_t>(whole_number_from_environment(
       "NETSPH_RATES_BATCH", kRatesBatchDefault,
@@ -46,9 +44,13 @@ void rates_kernel_from_environment(DeviceSetup& s) {
   s.rates_registers = registers == 80   ? RatesRegisterCap::To80
                       : registers == 64 ? RatesRegisterCap::To64
                                         : RatesRegisterCap::None;
-  s.rates_trimmed = whole_number_from_environment(
-                        "NETSPH_RATES_TRIM", 0, [](long v) { return v == 0 || v == 1; },
-                        "0 (all 125 cells) or 1 (the cells within reach)") == 1;
+  // The trimmed scan this chose is gone (GridIndex, 2026-12-04): say so rather than run the
+  // whole scan under a setting that asks for another.
+  if (const char* trim = std::getenv("NETSPH_RATES_TRIM"); trim != nullptr && *trim != '\0') {
+    throw Error("environment", std::string("NETSPH_RATES_TRIM is '") + trim +
+                                   "': the trimmed rates scan was removed (slower on an H200, "
+                                   "and it kept registers live through every scan); unset it");
+  }
   s.cuda_fast_math =
       whole_number_from_environment(
           "NETSPH_CUDA_FAST_MATH", 0, [](long v) { return v == 0 || v == 1; },

@@ -263,14 +263,14 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
       vdt = vdt > s.visc_dt ? vdt : s.visc_dt;
     }
   };
-  // The scan is trimmed to the cells within reach of a (GridIndex::first_range with a point;
-  // none where g.reach is 0).
-  const Vec3f at(xa, ya, za);
+  // Every candidate cell is scanned: a scan of only the cells within reach of a was slower on
+  // an H200 (its threads skip different cells and their warp waits for them), and the cursor
+  // that trimmed it kept seven more floats live through the loop (docs/PERFORMANCE.md, "CUDA").
   if (ka == ParticleKind::Buffer) {
     // Buffers have no rates.
   } else if (batch == 0) {
     // Each pair summed where the scan finds it: kept to measure the batches against.
-    g.for_each_range(cell_begin, keys[a], at, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
+    g.for_each_range(cell_begin, keys[a], [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
       for (std::uint32_t b = b0; b < b1; ++b) {
         const PosPress pb = v.pp[b];
         const PairOffset o = pair_offset(xa, ya, za, shift, pb);
@@ -290,7 +290,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
       }
       found = 0;
     };
-    g.for_each_range(cell_begin, keys[a], at, [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
+    g.for_each_range(cell_begin, keys[a], [&](std::uint32_t b0, std::uint32_t b1, Vec3f shift) {
       for (std::uint32_t b = b0; b < b1; ++b) {
         if (pair_offset(xa, ya, za, shift, v.pp[b]).r2 < m.support2 && b != a) {
           hits[found++] = b;

@@ -49,11 +49,6 @@ struct DeviceSetup {
   std::uint32_t rates_batch = kRatesBatchDefault;
   /// The registers a thread of the rates kernel may use (NETSPH_RATES_MAX_REGISTERS).
   RatesRegisterCap rates_registers = RatesRegisterCap::To64;
-  /// true: the rates kernel scans only the cells within reach of each particle
-  /// (GridIndex::reach, NETSPH_RATES_TRIM=1); false (the default): all 125. Trimmed, a warp's
-  /// threads skip different cells and wait for each other; on an H200 the whole scan was 15%
-  /// faster (2.44e8 against 2.12e8 particle-steps/s at 1e7, batch 8).
-  bool rates_trimmed = false;
   /// The CUDA step compiled with nvcc's --use_fast_math (backend/cuda/device_run_cuda_fast.cu;
   /// NETSPH_CUDA_FAST_MATH=1); no effect on the host executor.
   bool cuda_fast_math = false;

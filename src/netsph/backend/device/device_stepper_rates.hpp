@@ -80,8 +80,7 @@ void DeviceStepper<Exec>::rates_for(bool shift) {
 template <class Exec>
 template <class K, ViscosityModel Visc, DensityDiffusion Diff, bool Shift>
 void DeviceStepper<Exec>::rates_launch() {
-  GridIndex g = s_.grid;
-  if (!s_.rates_trimmed) g.reach = 0;
+  const GridIndex g = s_.grid;
   const std::uint32_t* begin = cell_begin_.data();
   const std::uint32_t* keys = keys_.data();
   const ParticleKind* kind = kind_.data();
