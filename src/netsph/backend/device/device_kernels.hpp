@@ -265,7 +265,7 @@ NETSPH_HD void device_rates_particle(const GridIndex& g, const std::uint32_t* ce
   };
   // Every candidate cell is scanned: a scan of only the cells within reach of a was slower on
   // an H200 (its threads skip different cells and their warp waits for them), and the cursor
-  // that trimmed it kept seven more floats live through the loop (docs/PERFORMANCE.md, "CUDA").
+  // that trimmed it kept six floats and a flag live through the loop (docs/PERFORMANCE.md, "CUDA").
   if (ka == ParticleKind::Buffer) {
     // Buffers have no rates.
   } else if (batch == 0) {
