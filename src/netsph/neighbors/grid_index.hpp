@@ -96,8 +96,17 @@ struct GridIndex {
     return true;
   }
 
-  /// The first non-empty candidate range of cell `c` (done() if it has none). With
-  /// next_range, a scan that can stop and resume; for_each_range is the whole scan in one call.
+  /// Calls visit(begin, end, shift) for every non-empty candidate range of cell `c`, in the
+  /// order of next_range.
+  template <class Visit>
+  NETSPH_HD void for_each_range(const std::uint32_t* cell_begin, std::uint32_t c,
+                                Visit&& visit) const {
+    for (RangeCursor r = first_range(cell_begin, c); !r.done(); next_range(cell_begin, r))
+      visit(r.b, r.e, r.shift);
+  }
+
+ private:
+  /// The first non-empty candidate range of cell `c` (done() if it has none).
   NETSPH_HD RangeCursor first_range(const std::uint32_t* cell_begin, std::uint32_t c) const {
     RangeCursor r = cursor_at(c);
     next_range(cell_begin, r);
@@ -136,10 +145,10 @@ struct GridIndex {
         r.run = 2;  // the whole y row is outside
         continue;
       }
-      // The row's cells [lo, hi], numbered as if the x axis went on past its ends.
+      // The row's cells [lo, hi], numbered as if the x axis went on past its ends, cut to the
+      // run's part of them (the wrapped low end, the grid, the wrapped high end) and moved into
+      // the grid.
       int lo = x0, hi = x1;
-      // The run's part of them (the wrapped low end, the grid, the wrapped high end), moved
-      // into the grid.
       float sx = 0;
       if (r.run == 0) {
         hi = hi < -1 ? hi : -1;
@@ -163,16 +172,6 @@ struct GridIndex {
     }
   }
 
-  /// Calls visit(begin, end, shift) for every non-empty candidate range of cell `c`, in the
-  /// order of next_range.
-  template <class Visit>
-  NETSPH_HD void for_each_range(const std::uint32_t* cell_begin, std::uint32_t c,
-                                Visit&& visit) const {
-    for (RangeCursor r = first_range(cell_begin, c); !r.done(); next_range(cell_begin, r))
-      visit(r.b, r.e, r.shift);
-  }
-
- private:
   NETSPH_HD RangeCursor cursor_at(std::uint32_t c) const {
     const std::uint32_t nx = static_cast<std::uint32_t>(n[0]);
     const std::uint32_t nxy = nx * static_cast<std::uint32_t>(n[1]);
