@@ -138,6 +138,7 @@ namespace {
 const std::vector<std::string_view> kViscosityKeys = {"model", "alpha", "kinematic_viscosity"};
 const std::vector<std::string_view> kDiffusionKeys = {"model", "delta"};
 const std::vector<std::string_view> kShiftingKeys = {"model", "coefficient", "surface_threshold"};
+const std::vector<std::string_view> kHistoryKeys = {"times", "velocities"};
 
 constexpr std::array kKernels = {Choice<KernelType>{"wendland", KernelType::Wendland},
                                  Choice<KernelType>{"cubic_spline", KernelType::CubicSpline}};
@@ -445,6 +446,57 @@ void CaseReader::check_in_plane(const TomlTableReader& r, std::string_view key,
     r.fail_value(key, node, fmt::format("y must be 0 because {}", kPlaneReason),
                  node.as_array()->get(1));
   }
+}
+
+VelocityHistory CaseReader::read_velocity_history(const TomlTableReader& r,
+                                                  std::string_view velocity_key,
+                                                  std::string_view history_key) const {
+  VelocityHistory history;
+  const toml::node* velocity = r.find(velocity_key);
+  const toml::node* node = r.find(history_key);
+  if (velocity && node) {
+    r.fail_value(history_key, *node,
+                 fmt::format("cannot be combined with {}: give either a constant {} = "
+                             "[u, v, w] or a {} = {{ times = [...], velocities = [...] }}, "
+                             "not both",
+                             r.key_path(velocity_key), velocity_key, history_key));
+  }
+  if (velocity) {
+    history.times = {0.0};
+    history.velocities = {read_in_plane_vector(r, velocity_key, NumberRule::any("m/s"), {})};
+    return history;
+  }
+  if (!node) return history;
+  const toml::table& table = r.nested_table(
+      history_key, *node,
+      "must be a table such as { times = [0, 1], velocities = [[0, 0, 0], [0.5, 0, 0]] }");
+  const std::string path = r.key_path(history_key);
+  TomlTableReader m(table, path, path, kHistoryKeys, source_);
+  const toml::node& times = m.require("times", "instants in s, >= 0, strictly increasing");
+  history.times = m.to_number_array("times", times, NumberRule::non_negative("s"), 1);
+  check_increasing(m, "times", times, history.times);
+  const toml::node& velocities = m.require("velocities", "one [u, v, w] in m/s per time");
+  const auto* array = velocities.as_array();
+  if (!array) {
+    m.fail_value("velocities", velocities,
+                 fmt::format("must be an array of [u, v, w] vectors in m/s, one per time, not {}",
+                             type_name(velocities)));
+  }
+  if (array->size() != history.times.size()) {
+    m.fail_value("velocities", velocities,
+                 fmt::format("must hold one [u, v, w] per time: {}.times has {} element{}, "
+                             "velocities has {}",
+                             path, history.times.size(), history.times.size() == 1 ? "" : "s",
+                             array->size()));
+  }
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string key = fmt::format("velocities[{}]", i + 1);
+    const toml::node& element = (*array)[i];
+    const Vec3d v = m.to_vec3(key, element, NumberRule::any("m/s"));
+    check_in_plane(m, key, element, v);
+    history.velocities.push_back(v);
+  }
+  return history;
 }
 
 BoxSpec CaseReader::read_box(const TomlTableReader& r, std::string_view what) const {

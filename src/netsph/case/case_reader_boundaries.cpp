@@ -14,7 +14,6 @@
 namespace netsph::case_detail {
 namespace {
 
-const std::vector<std::string_view> kMotionKeys = {"times", "velocities"};
 const std::vector<std::string_view> kProfileKeys = {"z", "u"};
 
 constexpr std::array kWallModels = {Choice<WallModel>{"dbc", WallModel::Dbc},
@@ -78,7 +77,7 @@ WallSpec CaseReader::read_wall(const toml::table& table, int number) const {
                  "own velocity); remove slip or set model = \"mdbc\"");
   }
   wall.slip = r.choice("slip", kWallSlips, wall.slip);
-  wall.motion = read_wall_motion(r);
+  wall.motion = read_velocity_history(r, "velocity", "motion");
   check_wall_layers(r, wall);
   check_wall_seamless(r, wall);
   return wall;
@@ -143,55 +142,6 @@ std::array<bool, 6> CaseReader::read_faces(const TomlTableReader& r) const {
   };
   for (const std::size_t face : r.to_word_list("faces", *node, rule)) faces[face] = true;
   return faces;
-}
-
-VelocityHistory CaseReader::read_wall_motion(const TomlTableReader& r) const {
-  VelocityHistory motion;
-  const toml::node* velocity = r.find("velocity");
-  const toml::node* node = r.find("motion");
-  if (velocity && node) {
-    r.fail_value("motion", *node,
-                 fmt::format("cannot be combined with {}: give either a constant velocity = "
-                             "[u, v, w] or a motion = {{ times = [...], velocities = [...] }}, "
-                             "not both",
-                             r.key_path("velocity")));
-  }
-  if (velocity) {
-    motion.times = {0.0};
-    motion.velocities = {read_in_plane_vector(r, "velocity", NumberRule::any("m/s"), {})};
-    return motion;
-  }
-  if (!node) return motion;
-  const toml::table& table = r.nested_table(
-      "motion", *node,
-      "must be a table such as { times = [0, 1], velocities = [[0, 0, 0], [0.5, 0, 0]] }");
-  const std::string path = r.key_path("motion");
-  TomlTableReader m(table, path, path, kMotionKeys, source_);
-  const toml::node& times = m.require("times", "instants in s, >= 0, strictly increasing");
-  motion.times = m.to_number_array("times", times, NumberRule::non_negative("s"), 1);
-  check_increasing(m, "times", times, motion.times);
-  const toml::node& velocities = m.require("velocities", "one [u, v, w] in m/s per time");
-  const auto* array = velocities.as_array();
-  if (!array) {
-    m.fail_value("velocities", velocities,
-                 fmt::format("must be an array of [u, v, w] vectors in m/s, one per time, not {}",
-                             type_name(velocities)));
-  }
-  if (array->size() != motion.times.size()) {
-    m.fail_value(
-        "velocities", velocities,
-        fmt::format("must hold one [u, v, w] per time: {}.times has {} element{}, "
-                    "velocities has {}",
-                    path, motion.times.size(), motion.times.size() == 1 ? "" : "s", array->size()));
-  }
-  for (std::size_t i = 0; i < array->size(); ++i) {
-    const std::string key = fmt::format("velocities[{}]", i + 1);
-    const toml::node& element = (*array)[i];
-    const Vec3d v = m.to_vec3(key, element, NumberRule::any("m/s"));
-    check_in_plane(m, key, element, v);
-    motion.velocities.push_back(v);
-  }
-  return motion;
 }
 
 /// mDBC extrapolates the fluid state to each boundary particle from a ghost point mirrored

@@ -105,12 +105,16 @@ class CaseReader {
   /// The same check for a vector read some other way (`node` is its array).
   void check_in_plane(const TomlTableReader& r, std::string_view key, const toml::node& node,
                       const Vec3d& v) const;
+  /// `velocity_key = [u, v, w]` (constant) or `history_key = { times, velocities }`, which
+  /// exclude each other: the [[wall]] `velocity`/`motion` and [[body]]
+  /// `velocity`/`motion_history` pairs. Empty when neither is given.
+  VelocityHistory read_velocity_history(const TomlTableReader& r, std::string_view velocity_key,
+                                        std::string_view history_key) const;
 
   // case_reader_boundaries.cpp
   void read_walls();
   WallSpec read_wall(const toml::table& table, int number) const;
   std::array<bool, 6> read_faces(const TomlTableReader& r) const;
-  VelocityHistory read_wall_motion(const TomlTableReader& r) const;
   void check_wall_layers(const TomlTableReader& r, const WallSpec& wall) const;
   void read_open_boundaries(bool inlet);
   OpenBoundarySpec read_open_boundary(const toml::table& table, bool inlet, int number);
@@ -144,11 +148,6 @@ class CaseReader {
   void read_body_reference(const TomlTableReader& r, BodySpec& body) const;
   /// `key` (a position) must lie inside [domain] when the case gives one.
   void check_in_domain(const TomlTableReader& r, std::string_view key, const Vec3d& point) const;
-  /// `velocity_key = [u, v, w]` (constant) or `history_key = { times, velocities }`, which
-  /// exclude each other: the [[wall]] `velocity`/`motion` and [[body]]
-  /// `velocity`/`motion_history` pairs. Empty when neither is given.
-  VelocityHistory read_velocity_history(const TomlTableReader& r, std::string_view velocity_key,
-                                        std::string_view history_key) const;
   void register_body_name(const toml::table& table, const BodySpec& body, int number);
 
   // case_reader_nets.cpp
