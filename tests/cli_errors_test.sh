@@ -42,4 +42,22 @@ expect_error "--json: the folder $tmp/nodir does not exist" \
 expect_error "--max-steps: must be >= 0" "$netsph" -q run "$case_file" --max-steps -1 -o "$tmp/neg"
 [ ! -d "$tmp/neg" ] || { echo "--max-steps -1 made an output folder"; exit 1; }
 expect_error "--sample-steps: must be >= 1" "$netsph" -q check "$case_file" --sample-steps 0
+# Found by a hostile-input sweep (2026-12-05): each of these crashed, ran out of memory or
+# misreported before.
+expect_error "--threads: 100000 is more than 8 per core" \
+  "$netsph" -q check "$case_file" --threads 100000
+# A domain of 1e10 m overflowed the grid's int cell counts: every particle "left the domain".
+expect_error "[domain]: the domain holds 3.17e+11 cells of the neighbour grid" \
+  "$netsph" -q run "$case_file" --set "domain.max=[1e10,0,8]" --max-steps 1 -o "$tmp/wide" --no-plots
+# A net of 10^5 m at 0.1 m meshes: refused by its mesh count, not by the machine's memory.
+expect_error "numerical meshes of mesh_grouping x twine_length = 0.1 m, more than 10000 a side" \
+  "$netsph" -q check "$net_case" --set net.0.width=1e5
+# One mesh, one knot, no twine: `netsph net` reports it (it dereferenced the first twine).
+"$netsph" -q net "$net_case" --set net.0.height=0.1 -o "$tmp/one_knot" >"$tmp/out" 2>&1 ||
+  { echo "netsph net failed on a one-knot net"; cat "$tmp/out"; exit 1; }
+grep -q "no twines: the outline holds a single knot" "$tmp/out" || { cat "$tmp/out"; exit 1; }
+# 1.5e10 snapshots counted in an int came out negative, which silenced the disk-space warning.
+"$netsph" check "$case_file" --set output.snapshot_every=1e-10 --sample-steps 1 >"$tmp/out" 2>&1 ||
+  { cat "$tmp/out"; exit 1; }
+grep -q "snapshots every 1e-10 s: 1.5e+10 of" "$tmp/out" || { cat "$tmp/out"; exit 1; }
 echo "ok: command-line mistakes are named before any work"

@@ -195,5 +195,22 @@ TEST(NetGenerator, OutlineMustHoldWholeMeshes) {
   EXPECT_NEAR(generate_net(s, {}).spacing_across, 0.102 / 5, 1e-12);
 }
 
+// A net of 10^4 meshes a side and more is refused before any knot is built: 10^5 m at 2 cm
+// meshes would be 2.5e13 knots (and overflowed the int that counts them).
+TEST(NetGenerator, AnOutlineOfMoreThanTenThousandMeshesASideIsRefused) {
+  NetSpec s = panel_5x5();
+  const double mesh = s.mesh_grouping * s.twine_length;
+  s.width = 1e5;
+  try {
+    generate_net(s, {});
+    FAIL() << "a net of " << s.width / mesh << " meshes across was built";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 10000 a side"), std::string::npos) << e.what();
+  }
+  s.width = 9999 * mesh;  // just under the bound: built
+  s.height = mesh;
+  EXPECT_NEAR(generate_net(s, {}).spacing_across, mesh, 1e-12);
+}
+
 }  // namespace
 }  // namespace netsph

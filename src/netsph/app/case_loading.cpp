@@ -54,6 +54,16 @@ std::pair<std::string, std::string> case_text(const CaseChoice& choice) {
 
 int apply_threads(int threads) {
   if (threads < 0) throw Error("--threads", "must be >= 0 (0: all cores)");
+  // More threads than cores only makes OpenMP's threads wait for each other at every barrier,
+  // and far more than the system allows ends in a crash inside the OpenMP runtime before any
+  // message of ours: at most 8 threads per core this process may use.
+  const int cores = omp_get_num_procs();
+  const int most = 8 * (cores > 0 ? cores : 1);
+  if (threads > most) {
+    throw Error("--threads", fmt::format("{} is more than 8 per core: this machine gives the run "
+                                         "{} core{}, so at most {} (0: all cores)",
+                                         threads, cores, cores == 1 ? "" : "s", most));
+  }
   if (threads > 0) omp_set_num_threads(threads);
   return omp_get_max_threads();
 }

@@ -74,14 +74,19 @@ int net_command(const NetArgs& args) {
     fmt::print(
         "  mass               netting {:.4g} kg (interior knot {:.4g} g), sinker {:.4g} kg\n",
         net.netting_mass, interior_mass * 1e3, net.sinker_mass);
-    const NetTwine& t = net.twines.front();
-    fmt::print(
-        "  twine law          T = {:.4g} eps + {:.4g} eps^2 N per numerical twine; "
-        "damping ratio {}\n",
-        t.law.c1, t.law.c2, ns.damping_ratio);
-    KnotSpringSolver solver(net);
-    fmt::print("  stable sub-step    {:.3g} s (velocity Verlet, sub-cycled)\n",
-               solver.stable_step());
+    // A net whose outline holds one numerical mesh has one knot and no twine to report.
+    if (net.twines.empty()) {
+      fmt::print("  twine law          no twines: the outline holds a single knot\n");
+    } else {
+      const NetTwine& t = net.twines.front();
+      fmt::print(
+          "  twine law          T = {:.4g} eps + {:.4g} eps^2 N per numerical twine; "
+          "damping ratio {}\n",
+          t.law.c1, t.law.c2, ns.damping_ratio);
+      KnotSpringSolver solver(net);
+      fmt::print("  stable sub-step    {:.3g} s (velocity Verlet, sub-cycled)\n",
+                 solver.stable_step());
+    }
     std::vector<Vec3d> initial;
     for (const NetKnot& k : net.knots) initial.push_back(k.position);
     const auto file = out / fmt::format("net_{}.vtk", ns.name);

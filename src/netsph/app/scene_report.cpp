@@ -72,8 +72,7 @@ SnapshotVolume snapshot_volume(const Simulation& sim, OutputParticles& particles
   v.particles = particles.count(ParticleSelection::Snapshot);
   v.bytes_each = static_cast<double>(v.particles * SnapshotWriter::bytes_per_particle());
   const double every = snapshot_interval(spec);
-  v.count =
-      every > 0 ? static_cast<int>(std::ceil(spec.simulation.end_time / every - 1e-9)) + 1 : 1;
+  v.count = every > 0 ? std::ceil(spec.simulation.end_time / every - 1e-9) + 1 : 1;
   return v;
 }
 
@@ -83,7 +82,7 @@ std::string format_bytes(double b) {
 
 std::string describe_snapshots(const Simulation& sim, const SnapshotVolume& v) {
   const auto size = format_bytes;
-  return fmt::format("snapshots every {:g} s: {} of {} particles{}, {} each, {} in all",
+  return fmt::format("snapshots every {:g} s: {:.6g} of {} particles{}, {} each, {} in all",
                      snapshot_interval(sim.spec()), v.count, v.particles,
                      sim.spec().output.snapshot_region ? " (inside output.snapshot_region)" : "",
                      size(v.bytes_each), size(v.total()));

@@ -17,7 +17,9 @@ void log_scene(const Simulation& sim, OutputParticles& particles, double setup_s
 struct SnapshotVolume {
   std::size_t particles = 0;  ///< per snapshot (inside output.snapshot_region when given)
   double bytes_each = 0;      ///< one snapshot file
-  int count = 0;              ///< snapshots over the run, t = 0 and the end included
+  /// Snapshots over the run, t = 0 and the end included; a double: a tiny snapshot_every over
+  /// a long run overflowed an int, and the disk-space warning then never fired.
+  double count = 0;
   double total() const { return bytes_each * count; }
 };
 SnapshotVolume snapshot_volume(const Simulation& sim, OutputParticles& particles);

@@ -3,6 +3,8 @@
 // table is read by a TomlTableReader that rejects unknown keys first, then reads and range-checks
 // the keys in a fixed order; cross-key rules (boxes, 2D, domain) come after the keys they use.
 // docs/case-reference.md documents every key; keep the two in step.
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -273,6 +275,23 @@ void CaseReader::read_simulation(const std::string& default_name) {
     r.fail_value("name", *r.find("name"),
                  "must not be a path: no '/', '\\' or ':', and not '.' or '..' (the run writes "
                  "to out/<name> unless -o names a folder)");
+  }
+  // A control character (a NUL cuts the folder name short, a newline splits it), a name of
+  // blanks or one longer than file systems allow would fail only when the output folder is
+  // made, or make a folder nobody can type.
+  const bool control = std::any_of(s.name.begin(), s.name.end(), [](char c) {
+    return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+  });
+  const bool blank_edge =
+      !s.name.empty() && (std::isspace(static_cast<unsigned char>(s.name.front())) ||
+                          std::isspace(static_cast<unsigned char>(s.name.back())));
+  constexpr std::size_t kLongestName = 200;
+  if (r.has("name") && (control || blank_edge || s.name.size() > kLongestName)) {
+    r.fail_value("name", *r.find("name"),
+                 fmt::format("must be a folder name of at most {} bytes, with no control "
+                             "characters and no spaces at its ends (the run writes to out/<name> "
+                             "unless -o names a folder)",
+                             kLongestName));
   }
   s.dimensions = static_cast<int>(r.integer("dimensions", IntRule{2, 3}, 3));
   s.dp = r.number("dp", NumberRule::positive("m"), 0.0);  // required unless net-only: require_dp

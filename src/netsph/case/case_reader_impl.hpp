@@ -137,6 +137,8 @@ class CaseReader {
   void read_bodies();
   BodySpec read_body(const toml::table& table, int number) const;
   void read_body_shape(const TomlTableReader& r, BodySpec& body) const;
+  /// `shape_kind`: the reader's ShapeKind (case_reader_bodies.cpp), as an int.
+  void check_body_fits_domain(const TomlTableReader& r, const BodySpec& body, int shape_kind) const;
   Quat read_body_orientation(const TomlTableReader& r, const BodySpec& body) const;
   /// A non-zero direction, normalised; y must be 0 in 2D unless `along_y_in_2d`, which
   /// requires x = z = 0 instead.

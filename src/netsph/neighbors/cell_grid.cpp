@@ -4,11 +4,27 @@
 #include <cmath>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "netsph/core/growth.hpp"
 
 #include "netsph/core/error.hpp"
 
 namespace netsph {
+
+namespace {
+
+/// The cell table's keys are 32-bit, with one key kept for "outside the grid".
+constexpr double kMostCells = 2e9;
+
+[[noreturn]] void throw_too_many_cells(double cells, double cell_size) {
+  throw Error("[domain]",
+              fmt::format("the domain holds {:.3g} cells of the neighbour grid ({:.4g} m "
+                          "wide), more than {:.0e}; shrink [domain] or raise dp",
+                          cells, cell_size, kMostCells));
+}
+
+}  // namespace
 
 void CellGrid::configure(const Vec3d& lo, const Vec3d& hi, double support, double skin, int dims,
                          std::array<bool, 3> periodic) {
@@ -30,7 +46,9 @@ void CellGrid::configure(const Vec3d& lo, const Vec3d& hi, double support, doubl
     if (!(len > 0)) throw Error("neighbors", std::string("empty domain on ") + axis_name[a]);
     if (periodic_[a]) {
       // A whole number of cells per period, each at least min_cell wide.
-      n_[a] = static_cast<int>(std::floor(len / min_cell));
+      const double count = std::floor(len / min_cell);
+      if (!(count <= kMostCells)) throw_too_many_cells(count, min_cell);
+      n_[a] = static_cast<int>(count);
       if (n_[a] < 2 * kSearchCells + 1) {
         throw Error("[domain]", std::string("the periodic ") + axis_name[a] + " extent " +
                                     std::to_string(len) + " m is shorter than " +
@@ -40,7 +58,12 @@ void CellGrid::configure(const Vec3d& lo, const Vec3d& hi, double support, doubl
       cell_[a] = len / n_[a];
       period_[a] = len;
     } else {
-      n_[a] = std::max(1, static_cast<int>(std::ceil(len / min_cell)));
+      // Counted in double first: a domain of 1e8 m or more on one axis at millimetre cells
+      // overflowed the int, every particle then lay "outside" the grid and the run stopped at
+      // step 0 blaming the fluid for leaving the domain.
+      const double count = std::ceil(len / min_cell);
+      if (!(count <= kMostCells)) throw_too_many_cells(count, min_cell);
+      n_[a] = std::max(1, static_cast<int>(count));
       cell_[a] = min_cell;
     }
     inv_cell_[a] = 1.0 / cell_[a];
@@ -49,10 +72,7 @@ void CellGrid::configure(const Vec3d& lo, const Vec3d& hi, double support, doubl
   // The displacement budget is split evenly between the two particles of a pair.
   max_displacement_ = 0.5 * (kSearchCells * smallest - support);
   const double cells = static_cast<double>(n_[0]) * n_[1] * n_[2];
-  if (cells > 2e9) {
-    throw Error("neighbors", "the domain holds more than 2e9 cells of size " +
-                                 std::to_string(min_cell) + " m; shrink [domain] or raise dp");
-  }
+  if (cells > kMostCells) throw_too_many_cells(cells, min_cell);
   begin_.assign(static_cast<std::size_t>(cell_count()) + 1, 0);
   index_.origin = origin_;
   index_.upper = upper_;

@@ -15,6 +15,17 @@ namespace {
 /// number of them within 5% (the knots are then spread evenly over the side).
 int mesh_count(const NetSpec& spec, double side, double twine, const char* key) {
   const double meshes = side / twine;
+  // A bound before any count becomes an int or a knot is built: a side of 100 km at 2 cm
+  // meshes asked for 1e13 knots and ran the machine out of memory. 10^4 meshes a side is a
+  // 30 m cage wall at 3 mm twines, far beyond what the coupled model resolves.
+  constexpr double kMostMeshes = 1e4;
+  if (!(meshes <= kMostMeshes)) {
+    throw Error(spec.where.str(),
+                fmt::format("net '{}': {} = {} m holds {:.3g} numerical meshes of mesh_grouping x "
+                            "twine_length = {:.4g} m, more than {:.0f} a side: raise "
+                            "mesh_grouping or make the net smaller",
+                            spec.name, key, side, meshes, twine, kMostMeshes));
+  }
   const int n = std::max(1, static_cast<int>(std::lround(meshes)));
   if (std::abs(meshes - n) > 0.05 * n) {
     throw Error(spec.where.str(),

@@ -246,14 +246,19 @@ double Simulation::compute_dt(const RateReductions& local) {
   }
   if (!(dt >= dt_floor_)) {
     check_dt_min_reachable(dt);
+    // As many digits as it takes to tell dt from the floor (a dt_min just above the step).
+    int digits = 3;
+    while (digits < 9 &&
+           fmt::format("{:.{}g}", dt, digits) == fmt::format("{:.{}g}", dt_floor_, digits))
+      ++digits;
     throw SimulationUnstable(
         "solver",
-        fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.3g} s is below "
-                    "the floor {:.3g} s (force limit {:.3g} s, acoustic-viscous limit "
+        fmt::format("time step collapsed at t = {:.6g} s (step {}): dt = {:.{}g} s is below "
+                    "the floor {:.{}g} s (force limit {:.3g} s, acoustic-viscous limit "
                     "{:.3g} s); particles are colliding or the flow is too fast for c0 = "
                     "{:.4g} m/s; the strongest acceleration: {}",
-                    time_, steps_, dt, dt_floor_, diag_.dt_limits.force, diag_.dt_limits.acoustic,
-                    scene_.sound_speed, fastest_accelerating()));
+                    time_, steps_, dt, digits, dt_floor_, digits, diag_.dt_limits.force,
+                    diag_.dt_limits.acoustic, scene_.sound_speed, fastest_accelerating()));
   }
   diag_.dt_limits.dt = dt;
   return dt;
