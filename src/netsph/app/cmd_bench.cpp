@@ -81,10 +81,13 @@ int bench_command(const BenchArgs& args) {
   // Every size and the output file are checked before the first run, which may take minutes.
   for (double target : args.sizes) {
     if (!(target >= 1000)) throw Error("--sizes", "particle counts must be >= 1000");
+    if (!std::isfinite(target)) throw Error("--sizes", "particle counts must be finite");
     try {
       check_case_fits_memory(bench_case(dp_for(target)), backend);
     } catch (const Error& e) {
-      throw Error("--sizes", fmt::format("{:.3g} particles: {}", target, e.message()));
+      // The memory check speaks of the case: say first that the size is what does not fit.
+      throw Error("--sizes",
+                  fmt::format("{:.3g} particles do not fit this machine: {}", target, e.message()));
     }
   }
   if (!args.json_path.empty()) {

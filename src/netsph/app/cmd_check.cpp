@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <string>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -11,6 +13,21 @@
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {
+
+namespace {
+
+/// "12 min 05 s"; days or years past a day, so that end_time = 1e300 does not print a number
+/// of minutes 300 digits long.
+std::string wall_estimate(double seconds) {
+  if (!std::isfinite(seconds)) return "forever";
+  if (seconds < 86400) {
+    return fmt::format("{:.0f} min {:02.0f} s", std::floor(seconds / 60), std::fmod(seconds, 60.0));
+  }
+  const double days = seconds / 86400;
+  return days < 365 ? fmt::format("{:.3g} days", days) : fmt::format("{:.3g} years", days / 365.25);
+}
+
+}  // namespace
 
 int check_command(const CheckArgs& args) {
   if (args.sample_steps < 1) throw Error("--sample-steps", "must be >= 1 (default 20)");
@@ -67,9 +84,7 @@ int check_command(const CheckArgs& args) {
   spdlog::info(
       "estimate for end_time = {:g} s: about {:.3g} steps, {}, {:.3g} h per simulated second (dt "
       "varies as the flow develops: take this as an order of magnitude)",
-      spec.simulation.end_time, n_total,
-      fmt::format("{:.0f} min {:02.0f} s", std::floor(n_total * per_step / 60),
-                  std::fmod(n_total * per_step, 60.0)),
+      spec.simulation.end_time, n_total, wall_estimate(n_total * per_step),
       per_step / mean_dt / 3600);
   if (spec.output.snapshots)
     spdlog::info("{}", describe_snapshots(sim, snapshot_volume(sim, particles)));

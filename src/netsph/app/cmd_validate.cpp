@@ -1,5 +1,6 @@
 // `netsph validate [--quick] [--only NAME,...] [--list] [--json FILE] [-o DIR]`: runs the paper's
 // validation cases (validation/validation.hpp) and prints the comparison table.
+#include <algorithm>
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -14,7 +15,11 @@ namespace netsph::app {
 
 int validate_command(const ValidateArgs& args) {
   if (args.list) {
+    check_entry_names(args.only);  // --list --only a,b lists those two
     for (const ValidationEntry& e : validation_entries()) {
+      if (!args.only.empty() &&
+          std::find(args.only.begin(), args.only.end(), e.name) == args.only.end())
+        continue;
       fmt::print("{:<22} section {:<9} {:>5.0f} min  {}{}\n", e.name, e.section, e.minutes, e.title,
                  e.quick ? "  [quick]" : "");
     }

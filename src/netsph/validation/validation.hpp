@@ -66,6 +66,9 @@ struct ValidationReport {
   double wall_s = 0;
 };
 
+/// Throws an Error naming --only and every entry when a name is not an entry's.
+void check_entry_names(const std::vector<std::string>& only);
+
 /// Throws netsph::Error for an unknown entry name in options.only.
 ValidationReport run_validation(const ValidationOptions& options);
 

@@ -461,8 +461,8 @@ const std::vector<ValidationEntry>& validation_entries() {
   return entries;
 }
 
-ValidationReport run_validation(const ValidationOptions& options) {
-  for (const std::string& name : options.only) {
+void check_entry_names(const std::vector<std::string>& only) {
+  for (const std::string& name : only) {
     bool known = false;
     for (const ValidationEntry& e : validation_entries()) known = known || e.name == name;
     if (!known) {
@@ -472,6 +472,10 @@ ValidationReport run_validation(const ValidationOptions& options) {
       throw Error("--only", fmt::format("no validation entry '{}'; entries: {}", name, names));
     }
   }
+}
+
+ValidationReport run_validation(const ValidationOptions& options) {
+  check_entry_names(options.only);
   const auto t0 = std::chrono::steady_clock::now();
   ValidationReport report;
   for (const ValidationEntry& e : validation_entries()) {
