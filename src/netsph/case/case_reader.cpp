@@ -657,6 +657,17 @@ void CaseReader::read_output() {
       r.number("checkpoint_every", NumberRule::non_negative("s"), o.checkpoint_every);
   read_force_window(r);
   read_snapshot_region(r);
+  // A standalone net run has no particles: no checkpoint (it runs in seconds and starts again
+  // as fast) and no particle snapshots to cut down. Said rather than ignored.
+  if (spec_.net_only()) {
+    for (const std::string_view key : {"checkpoint_every", "snapshot_region"}) {
+      if (const toml::node* node = r.find(key)) {
+        r.fail_value(key, *node,
+                     "does not apply to a standalone net case (no fluid, no particles): it "
+                     "writes no checkpoint and no particle snapshots; remove the key");
+      }
+    }
+  }
 }
 
 void CaseReader::read_snapshot_region(const TomlTableReader& r) {
