@@ -3,11 +3,13 @@
 // build, same threads), on a case with everything a step carries: open inlet and outlet,
 // moving walls, a coupled net (floating and fixed knot bodies, a twine, a sinker) and
 // shifting (tests/cases/good/plot_smoke.toml), its particles written in blocks of rows. A
-// checkpoint of another case is refused.
+// checkpoint of another case is refused, and so is one whose particles were damaged after it
+// was written (garbage inside an intact file), before any step runs on them.
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "case_runs.hpp"
 #include "netsph/io/checkpoint_file.hpp"
@@ -84,6 +86,38 @@ TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
   saved.source = "test checkpoint";
   Simulation other(test::load_case("dambreak2d.toml"));
   EXPECT_THROW(other.restore_state(saved), Error);
+}
+
+TEST(Restart, CorruptParticleStateIsRefusedNamingTheParticle) {
+  const CaseSpec spec = test::load_case("dambreak2d.toml");
+  Simulation sim(spec);
+  CheckpointData saved;
+  sim.save_state(saved);
+  saved.source = "damaged/checkpoint.h5";
+  EXPECT_NO_THROW(Simulation(spec).restore_state(saved));  // the intact state
+  constexpr std::size_t kRow = 1234;
+  const std::string id = "particle id " + std::to_string(saved.u32.at("particles.id")[kRow]);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto refused = [&](const char* what, auto&& damage) {
+    CheckpointData c = saved;
+    damage(c);
+    try {
+      Simulation(spec).restore_state(c);
+      ADD_FAILURE() << what << ": a damaged checkpoint was restored";
+    } catch (const Error& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("damaged/checkpoint.h5: the checkpoint is corrupt"), std::string::npos) << m;
+      EXPECT_NE(m.find(id), std::string::npos) << m;
+      EXPECT_NE(m.find(what), std::string::npos) << m;
+    }
+  };
+  refused("not finite", [&](CheckpointData& c) { c.f64["particles.pos"][3 * kRow + 2] = nan; });
+  refused("far outside the domain",
+          [&](CheckpointData& c) { c.f64["particles.pos"][3 * kRow] = 3e291; });
+  refused("100 times the sound speed",
+          [&](CheckpointData& c) { c.f32["particles.vel"][3 * kRow + 1] = -2.5e33f; });
+  refused("density 0", [&](CheckpointData& c) { c.f32["particles.rho"][kRow] = 0; });
+  refused("kind 255", [&](CheckpointData& c) { c.u8["particles.kind"][kRow] = 255; });
 }
 
 TEST(Restart, MissingOrForeignFileIsAClearError) {

@@ -1,11 +1,14 @@
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 #include "netsph/app/commands.hpp"
 #include "netsph/app/logging.hpp"
@@ -83,18 +86,29 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
 
 namespace {
 
+/// The dotted key of a --set, without the blanks --set allows around its parts.
+std::string override_key(const std::string& set) {
+  std::string key;
+  for (const char c : set.substr(0, set.find('=')))
+    if (c != ' ' && c != '\t') key += c;
+  return key;
+}
+
 /// A restart continues the checkpoint's particles, bodies and nets: a --set may change how long
 /// and in what steps it runs, and what it writes, but not the model they were made with (a new
 /// dp would step the old particles with another mass and kernel).
-void check_restart_override(const std::string& set) {
-  std::string key;  // the dotted key without the blanks --set allows around its parts
-  for (const char c : set.substr(0, set.find('=')))
-    if (c != ' ' && c != '\t') key += c;
+bool restart_may_set(const std::string& set) {
+  const std::string key = override_key(set);
   for (const char* allowed : {"simulation.end_time", "simulation.cfl", "simulation.dt_min",
                               "simulation.dt_max", "simulation.max_lost_fraction"}) {
-    if (key == allowed) return;
+    if (key == allowed) return true;
   }
-  if (key.rfind("output.", 0) == 0) return;
+  return key.rfind("output.", 0) == 0;
+}
+
+void check_restart_override(const std::string& set) {
+  if (restart_may_set(set)) return;
+  const std::string key = override_key(set);
   throw Error("--set " + set,
               "a restart continues the checkpoint's particles, so it may change only the run's "
               "length and time stepping (simulation.end_time, cfl, dt_min, dt_max, "
@@ -115,6 +129,60 @@ CaseSpec restart_case(const CheckpointData& c, const std::vector<std::string>& m
   const std::string name =
       source.rfind("builtin:", 0) == 0 ? source : std::filesystem::path(source).stem().string();
   return read_case_string(c.text_of("case.toml"), source, overrides, name);
+}
+
+/// A case and its --set overrides, for messages: "case 'name' (source, --set a=1 --set b=2)".
+std::string describe_case(const std::string& name, const std::string& source,
+                          const std::vector<std::string>& sets) {
+  std::string text = "case '" + name + "' (" + source;
+  for (const std::string& set : sets) text += " --set " + set;
+  return text + ")";
+}
+
+/// A restart appends to the outputs of the folder it continues, so the folder's checkpoint.h5
+/// must be the one its run wrote: one copied in from another run's folder would continue that
+/// other run into this folder's series.csv, snapshots and summary. The folder's summary.json,
+/// written at the end of every run and restart, names the case it ran; the checkpoint records
+/// its own (`recorded`: the --set overrides it was run with). They must be the same case from
+/// the same source, with the same overrides but for those one of them gained at a later
+/// restart, which only a restart may set (a checkpoint of a restart killed before it wrote its
+/// summary; the summary of a restart that failed before its first checkpoint). A folder without
+/// a readable summary.json (a run killed before its end) cannot be checked: its checkpoint is
+/// taken as its own.
+void check_checkpoint_is_the_folders(const std::string& dir, const CaseSpec& spec,
+                                     const std::vector<std::string>& recorded) {
+  const std::filesystem::path summary = std::filesystem::path(dir) / "summary.json";
+  std::ifstream in(summary);
+  if (!in) return;
+  const nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
+  if (s.is_discarded() || !s.is_object() || !s.contains("case")) return;
+  const nlohmann::json& c = s["case"];
+  if (!c.is_object() || !c.contains("name") || !c["name"].is_string() || !c.contains("source") ||
+      !c["source"].is_string()) {
+    return;
+  }
+  const std::string name = c["name"].get<std::string>();
+  const std::string source = c["source"].get<std::string>();
+  std::vector<std::string> sets;
+  if (c.contains("overrides") && c["overrides"].is_array()) {
+    for (const nlohmann::json& o : c["overrides"])
+      if (o.is_string()) sets.push_back(o.get<std::string>());
+  }
+  const std::size_t common = std::min(sets.size(), recorded.size());
+  const std::vector<std::string>& longer = sets.size() > recorded.size() ? sets : recorded;
+  const bool same_sets = std::equal(sets.begin(), sets.begin() + common, recorded.begin()) &&
+                         std::all_of(longer.begin() + common, longer.end(), restart_may_set);
+  if (name == spec.simulation.name && source == spec.source && same_sets) return;
+  throw Error(
+      "--restart",
+      fmt::format("{} is not the checkpoint of the run in {}: it continues {}, but {} is of "
+                  "{}; a restart would append the one run to the other's series.csv and "
+                  "snapshots. Put back the checkpoint.h5 this folder's run wrote, or restart the "
+                  "folder the checkpoint came from (if summary.json is left over from an earlier "
+                  "run in this folder, move it aside)",
+                  checkpoint_path(dir).string(), dir,
+                  describe_case(spec.simulation.name, spec.source, recorded), summary.string(),
+                  describe_case(name, source, sets)));
 }
 
 int exit_status(const RunReport& r) {
@@ -161,7 +229,14 @@ int run_command(const RunArgs& args) {
     if (coll && coll->rank() > 0) spdlog::set_level(spdlog::level::warn);  // process 0 reports
   }
   const bool reporting = !coll || coll->rank() == 0;
-  const bool restart = !args.restart_dir.empty();
+  const bool restart = args.restart_dir.has_value();
+  // `--restart ""` (an unset shell variable, say) would otherwise start the default case.
+  if (restart && args.restart_dir->empty()) {
+    throw Error("--restart",
+                "give a run folder: the folder of the run to continue (its -o, by default "
+                "out/<case name>), which holds its checkpoint.h5");
+  }
+  const std::string restart_dir = args.restart_dir.value_or("");
   if (restart && !args.case_choice.path.empty()) {
     throw Error("--restart",
                 "give either a case or --restart DIR: a restart reads its case from "
@@ -169,7 +244,7 @@ int run_command(const RunArgs& args) {
   }
   if (restart && !args.out_dir.empty()) {
     throw Error("--restart",
-                "a restart continues in the folder it restarts (" + args.restart_dir +
+                "a restart continues in the folder it restarts (" + restart_dir +
                     "): -o does not apply; copy the folder first to keep the original");
   }
   CheckpointData checkpoint, record;
@@ -178,17 +253,18 @@ int run_command(const RunArgs& args) {
   if (restart) {
     // A process of a distributed run reads only the particles of its part of the case, once
     // the case (in the checkpoint) says where that lies; the outputs' view holds none.
-    const std::filesystem::path file = checkpoint_path(args.restart_dir);
+    const std::filesystem::path file = checkpoint_path(restart_dir);
     checkpoint = coll ? read_checkpoint_file(file, Simulation::particle_rows(AxisRange::nothing()))
                       : read_checkpoint_file(file);
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
+    check_checkpoint_is_the_folders(restart_dir, spec, recorded_overrides(checkpoint));
     const double at = checkpoint.real("sim.time");
     if (run_has_ended(at, spec.simulation.end_time)) {
       throw Error("--restart",
                   fmt::format("the checkpoint in {} is at t = {:.6g} s, and the case ends at "
                               "simulation.end_time = {:.6g} s: nothing is left to run; give a "
                               "later end, e.g. --set simulation.end_time={:.3g}",
-                              args.restart_dir, at, spec.simulation.end_time, 2 * at));
+                              restart_dir, at, spec.simulation.end_time, 2 * at));
     }
     if (coll) {
       const AxisRange part = set_up_region(spec, coll->size(), coll->rank());
@@ -203,7 +279,7 @@ int run_command(const RunArgs& args) {
   }
   const std::string backend = resolve_backend(args.backend, static_cast<bool>(coll));
   const int threads = apply_threads(args.threads);
-  const std::filesystem::path out = restart ? std::filesystem::path(args.restart_dir)
+  const std::filesystem::path out = restart ? std::filesystem::path(restart_dir)
                                     : args.out_dir.empty()
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);

@@ -2,6 +2,7 @@
 // The netsph subcommands. Each returns the process exit code; errors are thrown as
 // netsph::Error and printed by main().
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,8 +31,10 @@ struct RunArgs {
   std::int64_t max_steps = 0;
   bool plain_progress = false;
   bool quiet = false;
-  bool plots = true;        ///< PNG plots at the end (when matplotlib is there)
-  std::string restart_dir;  ///< continue the run in this folder from its checkpoint
+  bool plots = true;  ///< PNG plots at the end (when matplotlib is there)
+  /// Continue the run in this folder from its checkpoint. Optional rather than empty when not
+  /// given, so that `--restart ""` (an unset shell variable) is an error, not a new run.
+  std::optional<std::string> restart_dir;
   /// Distributed runs: steps between checks of the slabs' balance (0: never cut again;
   /// RebalancePolicy).
   int rebalance_every = 20;

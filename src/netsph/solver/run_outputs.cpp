@@ -78,6 +78,30 @@ std::optional<double> resume_time(const CheckpointData* c) {
   const double t = c->real("sim.time");
   return final_extra(*c, 0) ? t * (1 - 2e-8) : t;  // CsvSeries keeps rows up to 1e-8 past it
 }
+
+/// Snapshots of the run before a restart that are gone from its folder (deleted to save room,
+/// or a copy of the folder made without them). particles.xdmf goes on listing them, because the
+/// snapshots after the restart are numbered on from them (SnapshotWriter), and ParaView then
+/// fails on the series: the user hears of it now, not there.
+void warn_missing_snapshots(const std::filesystem::path& dir, const std::string& entries) {
+  std::istringstream in(entries);  // a line per snapshot: file, time, step, particles
+  std::string file, first;
+  double t;
+  std::int64_t step;
+  std::size_t n, listed = 0, missing = 0;
+  while (in >> file >> t >> step >> n) {
+    ++listed;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(dir / file, ec)) continue;
+    if (missing++ == 0) first = file;
+  }
+  if (missing == 0) return;
+  spdlog::warn(
+      "{} of the {} snapshots written before the restart are missing from {} (the first: {}): "
+      "particles.xdmf still lists them (the new snapshots are numbered on after them), so "
+      "ParaView fails on it until they are put back; the remaining .h5 files open one by one",
+      missing, listed, dir.string(), first);
+}
 }  // namespace
 
 RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool snapshots,
@@ -167,7 +191,10 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
     const auto cut = entries.find_last_of('\n', entries.size() - 2);
     entries.erase(cut == std::string::npos ? 0 : cut + 1);
   }
-  if (snapshots_) snapshots_->resume(entries);
+  if (snapshots_) {
+    warn_missing_snapshots(dir_, entries);
+    snapshots_->resume(entries);
+  }
   // The nets' shapes written so far (net_<net>_<index>.vtk): their times, or in checkpoints
   // that did not record them those of the particle snapshots they went with.
   if (const auto saved_times = c.f64.find("outputs.net_times"); saved_times != c.f64.end()) {

@@ -4,6 +4,8 @@
 // rigid bodies' states (and last forces, for the outputs) and the nets' knots. The scene
 // (walls, zones, body shapes), the grid and every scratch array come from the case again.
 #include <algorithm>
+#include <cmath>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -15,6 +17,66 @@ namespace {
 template <class V, class T>
 void put3(std::vector<T>& out, const V& v) {
   out.push_back(v.x), out.push_back(v.y), out.push_back(v.z);
+}
+
+bool all_finite(std::span<const double> v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+/// The particles just read from a checkpoint, checked before a step runs on them. A file
+/// damaged after it was written (a disk or copy error, bytes overwritten inside an intact HDF5
+/// structure) reads without an HDF5 error; left alone, its garbage would stop the run a step
+/// later as "unstable" with advice about the time step. What a step can leave in a checkpoint
+/// is far inside these bounds: finite values, every particle in the domain (those outside it
+/// are removed; a margin of the domain's largest size allows for any drift before that), speeds
+/// below the sound speed (100 times it here) and densities within a few percent of the
+/// reference (a factor 10 here). Throws netsph::Error naming the file and the first bad particle.
+void check_restored_particles(const CheckpointData& c, const Scene& scene,
+                              std::span<const double> pos, std::span<const float> vel,
+                              std::span<const float> ghost, std::span<const float> rho,
+                              std::span<const std::uint8_t> kind,
+                              std::span<const std::uint32_t> id) {
+  const std::size_t n = rho.size();
+  const Vec3d lo = scene.domain_min, hi = scene.domain_max;
+  const double margin = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  const double max_speed = 100 * scene.sound_speed;
+  const double rho0 = scene.model.eos.rho0;
+  static const char* kind_name[] = {"fluid", "wall", "buffer", "body"};
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* x = pos.data() + 3 * i;
+    const float* v = vel.data() + 3 * i;
+    const float* g = ghost.data() + 3 * i;
+    const double speed = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
+    std::string what;
+    if (kind[i] > static_cast<std::uint8_t>(ParticleKind::Body)) {
+      what = fmt::format("kind {}, which no particle has", kind[i]);
+    } else if (!all_finite({x, 3})) {
+      what = fmt::format("position ({:.4g}, {:.4g}, {:.4g}) m, not finite", x[0], x[1], x[2]);
+    } else if (x[0] < lo.x - margin || x[0] > hi.x + margin || x[1] < lo.y - margin ||
+               x[1] > hi.y + margin || x[2] < lo.z - margin || x[2] > hi.z + margin) {
+      what = fmt::format(
+          "position ({:.4g}, {:.4g}, {:.4g}) m, far outside the domain [{:.4g}, {:.4g}, "
+          "{:.4g}]-[{:.4g}, {:.4g}, {:.4g}] m",
+          x[0], x[1], x[2], lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    } else if (!(speed <= max_speed)) {
+      what = fmt::format("velocity ({:.4g}, {:.4g}, {:.4g}) m/s, {}", v[0], v[1], v[2],
+                         std::isfinite(speed) ? "over 100 times the sound speed" : "not finite");
+    } else if (!(rho[i] > 0.1 * rho0 && rho[i] < 10 * rho0)) {
+      what =
+          fmt::format("density {:.4g} kg/m^3, {} (reference {:.4g} kg/m^3)", rho[i],
+                      std::isfinite(rho[i]) ? "off by more than a factor 10" : "not finite", rho0);
+    } else if (!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2])) {
+      what = "a ghost-node vector that is not finite";
+    }
+    if (what.empty()) continue;
+    const std::string_view kind_text =
+        kind[i] <= static_cast<std::uint8_t>(ParticleKind::Body) ? kind_name[kind[i]] : "?";
+    throw Error(c.source, fmt::format("the checkpoint is corrupt (damaged after it was "
+                                      "written): particle id {} ({}) has {}. It cannot be "
+                                      "continued: put back a good copy of the file, or start "
+                                      "the run again",
+                                      id[i], kind_text, what));
+  }
 }
 
 }  // namespace
@@ -59,7 +121,11 @@ CheckpointRows Simulation::particle_rows(const AxisRange& region) {
                  "particles.kind", "particles.id",  "particles.group"};
   rows.key_width = 3;
   if (!(region.lo < region.hi)) return rows;  // no row: the positions are not read to find none
-  rows.keep = [region](std::span<const double> x) { return region.contains({x[0], x[1], x[2]}); };
+  // A row whose position is not finite lies in no slab: every process reads it, so that
+  // restore_state reports a damaged checkpoint rather than the particle going missing.
+  rows.keep = [region](std::span<const double> x) {
+    return region.contains({x[0], x[1], x[2]}) || !std::isfinite(x[region.axis]);
+  };
   return rows;
 }
 
@@ -139,6 +205,18 @@ void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
   std::size_t knot_count = 0;
   for (const CoupledNet& net : nets_) knot_count += net.model.knots.size();
   if (knots.size() != 6 * knot_count) fail("the nets' knots differ");
+  check_restored_particles(c, scene_, pos, vel, ghost, rho, kind, id);
+  const auto corrupt = [&](const std::string& what) {
+    throw Error(c.source, "the checkpoint is corrupt (damaged after it was written): " + what +
+                              " not finite. It cannot be continued: put back a good copy of "
+                              "the file, or start the run again");
+  };
+  for (std::size_t b = 0; b < scene_.bodies.size(); ++b)
+    if (!all_finite({bodies.data() + kPerBody * b, kPerBody}))
+      corrupt("the state of body '" + scene_.bodies[b].name + "' is");
+  if (!all_finite(knots)) corrupt("the nets' knots are");
+  if (!all_finite(c.reals("sim.time")) || !all_finite(c.reals("sim.dt_floor")))
+    corrupt("the time is");
 
   const auto position = [&](std::size_t i) {
     return Vec3d{pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]};
