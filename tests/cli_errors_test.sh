@@ -64,4 +64,10 @@ expect_error "--sizes: particle counts must be finite" "$netsph" -q bench --size
 expect_error "--only: no validation entry 'nonsense'" "$netsph" -q validate --only nonsense --list
 mkdir -p "$tmp/run_folder" && echo '{}' >"$tmp/run_folder/summary.json"
 expect_error "--times: 'abc' is not a time" "$netsph" -q plot "$tmp/run_folder" --times 0.5,abc
+# A second run into a run's folder says it replaces that run, and takes the old checkpoint
+# and summary away with it (a restart would otherwise continue the old run into the new one).
+"$netsph" -q run "$case_file" --max-steps 2 -o "$tmp/twice" --no-plots >"$tmp/out" 2>&1 || { cat "$tmp/out"; exit 1; }
+"$netsph" run "$case_file" --max-steps 1 -o "$tmp/twice" --no-plots >"$tmp/out" 2>&1 || { cat "$tmp/out"; exit 1; }
+grep -q "holds an earlier run of case 'dambreak2d': this run replaces it" "$tmp/out" ||
+  { echo "no warning for a run into an earlier run's folder"; cat "$tmp/out"; exit 1; }
 echo "ok: command-line mistakes are named before any work"

@@ -5,6 +5,7 @@
 // growing with the current.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -56,6 +57,43 @@ TEST(StandaloneNet, BiNetDragWithinTwentyPercentOfTheExperiment) {
   while (std::getline(profile, line)) ++rows;
   EXPECT_EQ(rows, 15);
   EXPECT_TRUE(std::filesystem::exists(dir / "u0226" / "bi2014.vtk.series"));
+}
+
+// Asked to stop (Ctrl-C in `netsph run`), the run ends at that series row with every output of
+// a finished run: before, the signal killed it with no summary, knots or profile.
+TEST(StandaloneNet, AStoppedRunEndsAtItsRowWithEveryOutput) {
+  const auto dir = std::filesystem::temp_directory_path() / "netsph_standalone_net_stop_test";
+  std::filesystem::remove_all(dir);
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_CASES_DIR) + "/net_bi2014_standalone.toml", {});
+  NetRunOptions opt;
+  opt.out_dir = dir;
+  opt.progress = false;
+  int rows = 0;
+  opt.stop = [&rows] { return ++rows == 3; };
+  const NetRunReport r = run_standalone_nets(spec, opt);
+  EXPECT_EQ(r.status, "stopped");
+  EXPECT_LT(r.sim_time, spec.simulation.end_time / 10);
+  EXPECT_GT(r.sim_time, 0.0);
+  for (const char* file : {"summary.json", "knots_bi2014.csv", "profile_bi2014.csv",
+                           "series.csv", "bi2014.vtk.series"})
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+}
+
+// No current: Cd = F / (0.5 rho U^2 A) is undefined, not 0.
+TEST(StandaloneNet, CdWithoutACurrentIsUndefined) {
+  const auto dir = std::filesystem::temp_directory_path() / "netsph_standalone_net_still_test";
+  std::filesystem::remove_all(dir);
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_CASES_DIR) + "/net_bi2014_standalone.toml",
+                     {"current.velocity=[0, 0, 0]", "simulation.end_time=0.5",
+                      "output.force_window=[0, 0.5]"});
+  NetRunOptions opt;
+  opt.out_dir = dir;
+  opt.progress = false;
+  const NetRunReport r = run_standalone_nets(spec, opt);
+  ASSERT_EQ(r.status, "completed");
+  EXPECT_TRUE(std::isnan(r.nets.at(0).drag_coefficient));
 }
 
 }  // namespace

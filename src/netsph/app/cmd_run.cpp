@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +53,33 @@ void warn_if_snapshots_overfill(const Simulation& sim, OutputParticles& particle
 extern "C" void on_interrupt(int) {
   request_stop();
 }
+
+/// A new run into a folder that holds an earlier run replaces it: said, not done silently, and
+/// done whole at once. The earlier run's checkpoint.h5 and summary.json go now, so that a new
+/// run stopped early never leaves the old checkpoint and summary beside its own series and
+/// snapshots (a --restart would then continue the wrong run); its snapshots go when the
+/// snapshot writer starts, series.csv and log.txt are written afresh.
+void replace_earlier_run(const std::filesystem::path& out) {
+  namespace fs = std::filesystem;
+  const fs::path summary = out / "summary.json", checkpoint = checkpoint_path(out);
+  std::error_code ec;
+  const bool had_summary = fs::exists(summary, ec), had_checkpoint = fs::exists(checkpoint, ec);
+  if (!had_summary && !had_checkpoint) return;
+  std::string what = "an earlier run";
+  if (std::ifstream in(summary); in) {
+    const nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
+    if (s.is_object() && s.contains("case") && s["case"].is_object() &&
+        s["case"].contains("name") && s["case"]["name"].is_string()) {
+      what = fmt::format("an earlier run of case '{}'", s["case"]["name"].get<std::string>());
+    }
+  }
+  spdlog::warn(
+      "{} holds {}: this run replaces it (its snapshots, series.csv, summary.json{}). To keep a "
+      "run, give each its own folder with -o; to continue one, use netsph run --restart {}",
+      out.string(), what, had_checkpoint ? " and checkpoint.h5" : "", out.string());
+  fs::remove(summary, ec);
+  fs::remove(checkpoint, ec);
+}
 }  // namespace
 
 /// A standalone net case: no particles, no backend; the knot-spring model in a current.
@@ -61,17 +89,26 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
   NetRunOptions opt;
   opt.out_dir = out;
   opt.progress = !quiet;
+  // Ctrl-C ends the run at its next series row with every output written, as an SPH run's.
+  opt.stop = stop_requested;
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
   const NetRunReport r = run_standalone_nets(spec, opt);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
   for (const NetRunSummary& n : r.nets) {
     spdlog::info(
         "net '{}': {} knots, {} twines; over {:.3g}-{:.3g} s: drag {:.4g} N "
-        "(force [{:.4g}, {:.4g}, {:.4g}] N), Cd {:.4f} on the outline, largest "
+        "(force [{:.4g}, {:.4g}, {:.4g}] N), {} on the outline, largest "
         "deflection {:.4g} m",
         n.name, n.knots, n.twines, r.window[0], r.window[1],
         norm(spec.current.velocity) > 0
             ? dot(n.mean_force, spec.current.velocity / norm(spec.current.velocity))
             : 0.0,
-        n.mean_force.x, n.mean_force.y, n.mean_force.z, n.drag_coefficient, n.max_deflection);
+        n.mean_force.x, n.mean_force.y, n.mean_force.z,
+        std::isfinite(n.drag_coefficient) ? fmt::format("Cd {:.4f}", n.drag_coefficient)
+                                          : std::string("Cd undefined (no current)"),
+        n.max_deflection);
   }
   spdlog::info(
       "{}: t = {:.6g} s, {} knot sub-steps, {:.2f} s wall; outputs: series.csv, "
@@ -80,6 +117,13 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
   if (r.status == "unstable") {
     spdlog::error("the net became unstable: {}", r.message);
     return 3;
+  }
+  if (r.status == "stopped") {
+    spdlog::warn(
+        "{}; the outputs hold the run up to there (a standalone run has no checkpoint: "
+        "run it again to go further)",
+        r.message);
+    return 130;
   }
   return 0;
 }
@@ -286,6 +330,7 @@ int run_command(const RunArgs& args) {
   // Every process alike, so that all stop together when the folder cannot be made.
   create_output_folder(out, restart ? "--restart" : args.out_dir.empty() ? "output folder" : "-o");
   if (reporting) log_also_to_file(out / "log.txt", restart);
+  if (reporting && !restart) replace_earlier_run(out);
 
   spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,
                spec.source);

@@ -146,9 +146,15 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
       break;
     }
     write_row(t, report.substeps);
-    if (t >= next_snapshot - 1e-12 || i == rows) {
+    const bool stop = options.stop && options.stop();
+    if (t >= next_snapshot - 1e-12 || i == rows || stop) {
       write_snapshot(t);
       next_snapshot += snapshot_every;
+    }
+    if (stop) {
+      report.status = "stopped";
+      report.message = fmt::format("stopped by the user at t = {:.6g} s", t);
+      break;
     }
     const int percent = static_cast<int>(100 * t / end_time);
     if (options.progress && percent / 10 != last_percent / 10) {
@@ -182,7 +188,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
       s.mean_anchor_force = st.anchor_sum / static_cast<double>(st.window_samples);
     }
     const double q = 0.5 * loads.water_density * speed * speed * st.model.width * st.model.height;
-    s.drag_coefficient = q > 0 ? dot(s.mean_force, flow) / q : 0.0;
+    s.drag_coefficient = q > 0 ? dot(s.mean_force, flow) / q : std::nan("");
     s.max_deflection = max_normal_deflection(st.model, st.initial);
     report.nets.push_back(s);
     j["nets"][s.name] = {{"knots", s.knots},
