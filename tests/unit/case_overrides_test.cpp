@@ -123,6 +123,14 @@ TEST(CaseOverrides, MalformedOptionsPointAtSet) {
     EXPECT_NE(e.message().find(option), std::string::npos) << e.message();
   }
   EXPECT_NE(error_with({"wall.5.layers=2"}).message().find("out of range"), std::string::npos);
+  // A negative or oversized index is named as not an index (it suggested "wall.0.-1").
+  for (const std::string option : {"wall.-1.layers=2", "wall.99999999999999999999.layers=2"}) {
+    const std::string m = error_with({option}).message();
+    EXPECT_NE(m.find("is not an index; the entries of wall are numbered from 0"),
+              std::string::npos)
+        << m;
+    EXPECT_EQ(m.find("e.g. wall.0."), std::string::npos) << m;
+  }
   // An indexed value of a key the case does not have: full3d.toml has no structure_gravity. The
   // message must not send the user to set keys of an entry (which then fails as out of range).
   const Error absent = error_with({"fluid.structure_gravity.2=-1"});

@@ -1,5 +1,6 @@
 #include "netsph/case/case_overrides.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <optional>
 
@@ -127,6 +128,13 @@ toml::node& entry_of_array(toml::array& array, const std::string& segment,
   if (!array.empty() && !array.is_array_of_tables()) {
     fail(o,
          fmt::format("{} is an array of values; set it as a whole, e.g. {}=[...]", walked, walked));
+  }
+  if (!index && !segment.empty() &&
+      (segment[0] == '-' || std::isdigit(static_cast<unsigned char>(segment[0])))) {
+    // Meant as an index (negative, or too large to be one): "e.g. wall.0.-1" would not help.
+    fail(o, fmt::format("{}.{}: '{}' is not an index; the entries of {} are numbered from 0 "
+                        "(the case has {})",
+                        walked, segment, segment, walked, array.size()));
   }
   if (!index) {
     fail(o, fmt::format("{} is an array of tables: select an entry with a 0-based index, "
