@@ -727,7 +727,41 @@ void CaseReader::read_force_window(const TomlTableReader& r) {
 
 namespace {
 
+/// toml++ 3 limits the nesting of arrays and inline tables (256) but walks a dotted key's parts
+/// recursively without a limit: a key of 50,000 parts overflowed the stack (SIGSEGV). No case
+/// key has more than a few parts, so a key of more than 256 is refused, with its line, before
+/// toml++ sees it. Counts the dots outside quotes before a line's first '=', '#', ',', ']' or
+/// '{': those of a key or a [table.header], and at most one number's of an array's
+/// continuation line ("0.1, 0.2,"); a line of a multi-line string would need 256 dots before
+/// any of those characters to be misread.
+void check_dotted_key_depth(std::string_view text, const std::string& source_name) {
+  constexpr int kMostParts = 256;
+  int line = 1, dots = 0;
+  bool in_key = true;
+  char quote = 0;
+  for (const char c : text) {
+    if (c == '\n') {
+      ++line, dots = 0, in_key = true, quote = 0;
+      continue;
+    }
+    if (!in_key) continue;
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '=' || c == '#' || c == ',' || c == ']' || c == '{') {
+      in_key = false;
+    } else if (c == '.' && ++dots >= kMostParts) {
+      throw Error(fmt::format("{}:{}:1", source_name, line),
+                  fmt::format("a dotted key of more than {} parts: no case key has more than a "
+                              "few (e.g. fluid.viscosity.alpha)",
+                              kMostParts));
+    }
+  }
+}
+
 toml::table parse_toml(std::string_view text, const std::string& source_name) {
+  check_dotted_key_depth(text, source_name);
   try {
     return toml::parse(text, std::string(source_name));
   } catch (const toml::parse_error& e) {
