@@ -70,4 +70,12 @@ expect_error "--times: 'abc' is not a time" "$netsph" -q plot "$tmp/run_folder" 
 "$netsph" run "$case_file" --max-steps 1 -o "$tmp/twice" --no-plots >"$tmp/out" 2>&1 || { cat "$tmp/out"; exit 1; }
 grep -q "holds an earlier run of case 'dambreak2d': this run replaces it" "$tmp/out" ||
   { echo "no warning for a run into an earlier run's folder"; cat "$tmp/out"; exit 1; }
+# A force window that no probe sample reaches: a warning (in summary.json too), not an empty
+# mean found later by a script.
+"$netsph" run "$case_file" -o "$tmp/window" --no-plots --set simulation.end_time=0.05 \
+  --set output.snapshot_every=0.01 --set output.series_every=1.0 --set probe.0.type=point \
+  --set 'probe.0.at=[0.5,0,0.5]' >"$tmp/out" 2>&1 || { cat "$tmp/out"; exit 1; }
+grep -q "probe 'probe1': no sample in output.force_window" "$tmp/out" || { cat "$tmp/out"; exit 1; }
+grep -q "probe 'probe1': no sample in output.force_window" "$tmp/window/summary.json" ||
+  { echo "the warning is not in summary.json"; exit 1; }
 echo "ok: command-line mistakes are named before any work"

@@ -96,5 +96,22 @@ TEST(StandaloneNet, CdWithoutACurrentIsUndefined) {
   EXPECT_TRUE(std::isnan(r.nets.at(0).drag_coefficient));
 }
 
+// A force window between two series rows averages nothing: the means are NaN, not 0 N.
+TEST(StandaloneNet, AForceWindowWithoutASampleMeasuresNothing) {
+  const auto dir = std::filesystem::temp_directory_path() / "netsph_standalone_net_window_test";
+  std::filesystem::remove_all(dir);
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_CASES_DIR) + "/net_bi2014_standalone.toml",
+                     {"simulation.end_time=0.5", "output.force_window=[0.301, 0.305]"});
+  NetRunOptions opt;
+  opt.out_dir = dir;
+  opt.progress = false;
+  const NetRunReport r = run_standalone_nets(spec, opt);
+  ASSERT_EQ(r.status, "completed");
+  EXPECT_TRUE(std::isnan(r.nets.at(0).mean_force.x));
+  EXPECT_TRUE(std::isnan(r.nets.at(0).drag_coefficient));
+  EXPECT_GT(r.nets.at(0).max_deflection, 0.0);  // measured at the end, window or not
+}
+
 }  // namespace
 }  // namespace netsph

@@ -24,6 +24,7 @@
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/io/output_folder.hpp"
 #include "netsph/net/standalone_net_run.hpp"
+#include "netsph/solver/run_outputs.hpp"
 #include "netsph/solver/runner.hpp"
 
 namespace netsph::app {
@@ -97,6 +98,21 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   for (const NetRunSummary& n : r.nets) {
+    if (!std::isfinite(n.mean_force.x)) {
+      spdlog::warn(
+          "net '{}': {}, so its mean force and Cd are not measured (null in summary.json); "
+          "largest deflection {:.4g} m",
+          n.name,
+          r.sim_time < r.window[0]
+              ? fmt::format("the run ended at t = {:.6g} s, before output.force_window [{:.6g}, "
+                            "{:.6g}] s",
+                            r.sim_time, r.window[0], r.window[1])
+              : fmt::format("no series row (every {:.6g} s) fell in output.force_window [{:.6g}, "
+                            "{:.6g}] s: widen the window or lower output.series_every",
+                            series_interval(spec), r.window[0], r.window[1]),
+          n.max_deflection);
+      continue;
+    }
     spdlog::info(
         "net '{}': {} knots, {} twines; over {:.3g}-{:.3g} s: drag {:.4g} N "
         "(force [{:.4g}, {:.4g}, {:.4g}] N), {} on the outline, largest "

@@ -40,12 +40,20 @@ void log_run_results(const nlohmann::json& summary) {
           f[2].get<double>());
     }
     const auto& b = n["final_bottom_displacement_m"];
+    // No means when no step fell in the window (a warning says so): no zeros in their place.
+    const bool means = n.contains("mean_max_deflection_m");
     spdlog::info(
-        "net {}: largest deflection along its normal {:.4g} m (mean over {}), {:.4g} m at the end; "
-        "bottom edge moved [{:.3g}, {:.3g}, {:.3g}] m; largest twine tension {:.4g} N",
-        n["name"].get<std::string>(), n.value("mean_max_deflection_m", 0.0), window_text(n),
+        "net {}: largest deflection along its normal {}{:.4g} m at the end; bottom edge moved "
+        "[{:.3g}, {:.3g}, {:.3g}] m{}",
+        n["name"].get<std::string>(),
+        means ? fmt::format("{:.4g} m (mean over {}), ", n["mean_max_deflection_m"].get<double>(),
+                            window_text(n))
+              : std::string(),
         n["final_max_deflection_m"].get<double>(), b[0].get<double>(), b[1].get<double>(),
-        b[2].get<double>(), n.value("mean_max_tension_N", 0.0));
+        b[2].get<double>(),
+        means
+            ? fmt::format("; largest twine tension {:.4g} N", n["mean_max_tension_N"].get<double>())
+            : std::string());
   }
   for (const auto& p : summary.value("probes", nlohmann::json::array())) {
     const std::string name = p["name"].get<std::string>();

@@ -183,12 +183,17 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     s.name = st.model.name;
     s.knots = static_cast<int>(st.model.knots.size());
     s.twines = static_cast<int>(st.model.twines.size());
+    // No series row in the force window (narrower than series_every, or a run stopped before
+    // it): the means are not measured, and NaN (null in summary.json) says so where 0 N read
+    // as a measured drag.
+    const double nan = std::nan("");
+    s.mean_force = s.mean_anchor_force = Vec3d(nan, nan, nan);
     if (st.window_samples > 0) {
       s.mean_force = st.force_sum / static_cast<double>(st.window_samples);
       s.mean_anchor_force = st.anchor_sum / static_cast<double>(st.window_samples);
     }
     const double q = 0.5 * loads.water_density * speed * speed * st.model.width * st.model.height;
-    s.drag_coefficient = q > 0 ? dot(s.mean_force, flow) / q : std::nan("");
+    s.drag_coefficient = q > 0 ? dot(s.mean_force, flow) / q : nan;
     s.max_deflection = max_normal_deflection(st.model, st.initial);
     report.nets.push_back(s);
     j["nets"][s.name] = {{"knots", s.knots},

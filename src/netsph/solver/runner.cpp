@@ -74,6 +74,41 @@ std::vector<std::string> collect_warnings(const Simulation& sim) {
   return w;
 }
 
+/// The means over output.force_window that nothing fed: a window shorter than one time step
+/// (bodies, nets) or between two samples (probes, which sample every series_every or their own
+/// `every`), or a probe that never had fluid in reach. Their keys are left out of summary.json;
+/// without a word a script reading them would find nothing, and the log printed zeros.
+std::vector<std::string> empty_window_warnings(const nlohmann::json& summary) {
+  std::vector<std::string> w;
+  const auto window = [](const nlohmann::json& j) {
+    return fmt::format("[{:.6g}, {:.6g}] s", j["window_s"][0].get<double>(),
+                       j["window_s"][1].get<double>());
+  };
+  for (const auto& g : summary.value("bodies", nlohmann::json::array())) {
+    if (g.value("averaged_over_s", 1.0) > 0) continue;
+    w.push_back(
+        fmt::format("force group '{}': no time step fell in output.force_window {}, so "
+                    "its mean force is not measured; widen the window",
+                    g.value("group", std::string("?")), window(g)));
+  }
+  for (const auto& n : summary.value("nets", nlohmann::json::array())) {
+    if (n.contains("mean_max_deflection_m")) continue;
+    w.push_back(
+        fmt::format("net '{}': no time step fell in output.force_window {}, so its mean "
+                    "deflection and tension are not measured; widen the window",
+                    n.value("name", std::string("?")), window(n)));
+  }
+  for (const auto& p : summary.value("probes", nlohmann::json::array())) {
+    if (p.value("samples", 1) > 0) continue;
+    w.push_back(
+        fmt::format("probe '{}': no sample in output.force_window {}: the window lies "
+                    "between two samples (every output.series_every, or the probe's "
+                    "every) or no fluid came within reach; its means are empty",
+                    p.value("name", std::string("?")), window(p)));
+  }
+  return w;
+}
+
 /// The last particles that left the domain, as summary.json lists them.
 nlohmann::json lost_json(std::span<const StepDiagnostics::Lost> lost) {
   nlohmann::json j = nlohmann::json::array();
@@ -289,6 +324,10 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   r.checkpoint_time = checkpoint_time;
   r.snapshots = outputs->snapshots_written();
   r.summary = summary_json(*view, final_state, r, opt, *outputs, stepper.processes());
+  for (std::string& w : empty_window_warnings(r.summary)) {
+    r.summary["warnings"].push_back(w);
+    r.warnings.push_back(std::move(w));
+  }
   if (opt.resume) r.summary["time"]["restarted_from_s"] = start_time;
   write_file_atomic(opt.out_dir / "summary.json", r.summary.dump(2) + "\n");
   return r;
