@@ -28,4 +28,14 @@ check probe_side.png
 if "$netsph" -q plot "$out/no-such-folder" 2>/dev/null; then
   echo "netsph plot accepted a folder without summary.json"; exit 1
 fi
+# A standalone net run (no fluid; its summary keys the nets by name) gets its force, net and
+# shape plots too: `netsph plot` wrote none and said it had.
+standalone="$(dirname "$out")/standalone"
+"$netsph" -q run "$(dirname "$0")/../cases/net_bi2014_standalone.toml" -o "$standalone" \
+  --set simulation.end_time=0.5 --set "output.force_window=[0.25,0.5]" --no-plots
+"$netsph" -q plot "$standalone"
+out="$standalone"
+for f in forces_bi2014.png net_bi2014.png net_bi2014_shape.png; do
+  check "$f"
+done
 echo "ok: $(ls "$out/plots" | wc -l) plots"

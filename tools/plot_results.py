@@ -5,6 +5,7 @@ Reads the folder's summary.json, series.csv, probes/*_mean.csv and the nets' VTK
 writes into DIR/plots/:
   forces_<group>.png        drag (Fx) and lift (Fz) of each force group over time, the
                             averaging window shaded, its mean drawn; Cd on a second axis
+                            (a standalone net run: forces_<net>.png, the current's force)
   net_<net>.png             a net's largest deflection and twine tension over time
   net_<net>_shape.png       the net seen from the side (x-z) at five moments of the run, or at
                             the times given as a second argument ("0.5,1,2.5")
@@ -130,6 +131,26 @@ def plot_net_series(series, summary, case, out):
         ax2.set_ylabel("largest twine tension [N] (red)")
         ax.set_title(f"{case}: net '{name}'")
         written.append(save(fig, out, f"net_{name}.png"))
+    return written
+
+
+def plot_standalone_forces(series, summary, case, out):
+    """A standalone net run: the current's force on each net over time, the window shaded."""
+    written = []
+    t0, t1 = summary.get("force_window_s", [None, None])
+    for name in summary.get("nets", {}):
+        if name + "_Fx" not in series:
+            continue
+        fig, ax = plt.subplots(figsize=(8, 4))
+        ax.plot(series["time"], series[name + "_Fx"], color="#1f4e79", lw=1, label="drag (Fx)")
+        ax.plot(series["time"], series[name + "_Fz"], color="#9bbb59", lw=0.8, label="lift (Fz)")
+        if t0 is not None:
+            ax.axvspan(t0, t1, color="0.9", zorder=0, label="averaging window")
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("force of the current on the net [N]")
+        ax.set_title(f"{case}: net '{name}' (standalone, screen or Morison model)")
+        ax.legend(loc="best", fontsize=8)
+        written.append(save(fig, out, f"forces_{name}.png"))
     return written
 
 
@@ -267,6 +288,16 @@ def main(argv):
         written += plot_time_step(series, case, out)
         written += plot_net_shapes(folder, summary, case, out, times)
         written += plot_probes(folder, summary, case, out)
+    elif isinstance(summary.get("nets"), dict) and os.path.exists(series_path):
+        # A standalone net run (no fluid): its summary keys the nets by name.
+        series, _ = read_csv(series_path)
+        nets = {"nets": [{"name": name} for name in summary["nets"]]}
+        written += plot_standalone_forces(series, summary, case, out)
+        written += plot_net_series(series, nets, case, out)
+        written += plot_net_shapes(folder, nets, case, out, times)
+    if not written:
+        print(f"plot_results: nothing to plot in {folder}", file=sys.stderr)
+        return 1
     for w in written:
         print(w)
     return 0

@@ -1,5 +1,6 @@
 #include "netsph/solver/probes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -214,7 +215,11 @@ nlohmann::json ProbeRecorder::summary() const {
     j["file"] = "probes/" + pr->spec.name + ".csv";
     j["mean_file"] = "probes/" + pr->spec.name + "_mean.csv";
     j["window_s"] = {t0_, t1_};
-    j["samples"] = pr->sums.empty() ? 0 : pr->sums.front().samples;
+    // The most samples any point took (a point counts a sample only with fluid in reach): the
+    // first point of a line or plane may lie in a wall while the others measure.
+    int samples = 0;
+    for (const ProbeAverage& a : pr->sums) samples = std::max(samples, a.samples);
+    j["samples"] = samples;
     if (pr->spec.type == ProbeType::Point && pr->sums.front().samples > 0) {
       const ProbeAverage m = mean_of(pr->sums.front());
       j["mean_velocity_m_s"] = {m.velocity.x, m.velocity.y, m.velocity.z};
