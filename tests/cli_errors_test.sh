@@ -78,4 +78,10 @@ grep -q "holds an earlier run of case 'dambreak2d': this run replaces it" "$tmp/
 grep -q "probe 'probe1': no sample in output.force_window" "$tmp/out" || { cat "$tmp/out"; exit 1; }
 grep -q "probe 'probe1': no sample in output.force_window" "$tmp/window/summary.json" ||
   { echo "the warning is not in summary.json"; exit 1; }
+# A point probe inside the tank's wall (coverage 0.01): its means come with a warning.
+"$netsph" run "$case_file" -o "$tmp/in_wall" --no-plots --set simulation.end_time=0.05 \
+  --set output.snapshot_every=0.01 --set probe.0.type=point --set 'probe.0.at=[-0.03,0,0.2]' \
+  >"$tmp/out" 2>&1 || { cat "$tmp/out"; exit 1; }
+grep -q "probe 'probe1': mean coverage 0.0.* the point lies mostly outside the fluid" "$tmp/out" ||
+  { cat "$tmp/out"; exit 1; }
 echo "ok: command-line mistakes are named before any work"

@@ -224,6 +224,9 @@ nlohmann::json ProbeRecorder::summary() const {
       const ProbeAverage m = mean_of(pr->sums.front());
       j["mean_velocity_m_s"] = {m.velocity.x, m.velocity.y, m.velocity.z};
       j["mean_pressure_Pa"] = m.pressure;
+      // Below 1/2 the point lies mostly outside the fluid (in a wall, a body or the air): its
+      // Shepard means are those of the few particles at the edge of its kernel (the run warns).
+      j["mean_coverage"] = m.coverage;
       if (inflow_) j["velocity_reduction"] = 1 - m.velocity.x / *inflow_;
     }
     if (pr->spec.type != ProbeType::Point && inflow_) {

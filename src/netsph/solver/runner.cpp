@@ -77,8 +77,9 @@ std::vector<std::string> collect_warnings(const Simulation& sim) {
 /// The means over output.force_window that nothing fed: a window shorter than one time step
 /// (bodies, nets) or between two samples (probes, which sample every series_every or their own
 /// `every`), or a probe that never had fluid in reach. Their keys are left out of summary.json;
-/// without a word a script reading them would find nothing, and the log printed zeros.
-std::vector<std::string> empty_window_warnings(const nlohmann::json& summary) {
+/// without a word a script reading them would find nothing, and the log printed zeros. And a
+/// point probe whose mean coverage is below 1/2 (mostly in a wall, a body or the air).
+std::vector<std::string> window_warnings(const nlohmann::json& summary) {
   std::vector<std::string> w;
   const auto window = [](const nlohmann::json& j) {
     return fmt::format("[{:.6g}, {:.6g}] s", j["window_s"][0].get<double>(),
@@ -99,6 +100,13 @@ std::vector<std::string> empty_window_warnings(const nlohmann::json& summary) {
                     n.value("name", std::string("?")), window(n)));
   }
   for (const auto& p : summary.value("probes", nlohmann::json::array())) {
+    if (p.contains("mean_coverage") && p["mean_coverage"].get<double>() < 0.5) {
+      w.push_back(fmt::format(
+          "probe '{}': mean coverage {:.3g} over output.force_window {}: the point lies mostly "
+          "outside the fluid (in a wall, a body or the air), so its means are those of the few "
+          "fluid particles at the edge of its kernel; move it into the water",
+          p.value("name", std::string("?")), p["mean_coverage"].get<double>(), window(p)));
+    }
     if (p.value("samples", 1) > 0) continue;
     w.push_back(
         fmt::format("probe '{}': no sample in output.force_window {}: the window lies "
@@ -324,7 +332,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
   r.checkpoint_time = checkpoint_time;
   r.snapshots = outputs->snapshots_written();
   r.summary = summary_json(*view, final_state, r, opt, *outputs, stepper.processes());
-  for (std::string& w : empty_window_warnings(r.summary)) {
+  for (std::string& w : window_warnings(r.summary)) {
     r.summary["warnings"].push_back(w);
     r.warnings.push_back(std::move(w));
   }
