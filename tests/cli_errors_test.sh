@@ -59,7 +59,7 @@ grep -q "no twines: the outline holds a single knot" "$tmp/out" || { cat "$tmp/o
 # 1.5e10 snapshots counted in an int came out negative, which silenced the disk-space warning.
 "$netsph" check "$case_file" --set output.snapshot_every=1e-10 --sample-steps 1 >"$tmp/out" 2>&1 ||
   { cat "$tmp/out"; exit 1; }
-grep -q "snapshots every 1e-10 s: 1.5e+10 of" "$tmp/out" || { cat "$tmp/out"; exit 1; }
+grep -q "snapshots every 1e-10 s: 1.5e+10 snapshots of" "$tmp/out" || { cat "$tmp/out"; exit 1; }
 expect_error "--sizes: particle counts must be finite" "$netsph" -q bench --sizes inf --steps 1
 expect_error "--only: no validation entry 'nonsense'" "$netsph" -q validate --only nonsense --list
 mkdir -p "$tmp/run_folder" && echo '{}' >"$tmp/run_folder/summary.json"

@@ -36,6 +36,11 @@ void warn_if_snapshots_overfill(const Simulation& sim, OutputParticles& particle
                                 const std::filesystem::path& out) {
   const SnapshotVolume v = snapshot_volume(sim, particles);
   spdlog::info("{}", describe_snapshots(sim, v));
+  if (v.particles == 0 && sim.spec().output.snapshot_region) {
+    spdlog::warn(
+        "output.snapshot_region holds no particle at the start: the snapshots stay empty until "
+        "particles move into it (check its min and max against the water and the walls)");
+  }
   std::filesystem::path at = std::filesystem::absolute(out);
   std::error_code ec;
   while (!std::filesystem::exists(at, ec) && at.has_parent_path() && at != at.parent_path())
@@ -258,8 +263,13 @@ int report_run(const RunReport& r, const std::filesystem::path& out, bool plots)
   spdlog::info(
       "{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
       r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
-  spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
-               r.snapshots, std::filesystem::absolute(out).string());
+  if (r.snapshots > 0) {
+    spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
+                 r.snapshots, std::filesystem::absolute(out).string());
+  } else {
+    spdlog::info("outputs: series.csv, summary.json in {} (no particle snapshots)",
+                 std::filesystem::absolute(out).string());
+  }
   if (plots) make_plots(out);  // also after a failure: the plots show what went wrong
   if (r.checkpoint_time >= 0 && r.status != "completed") {
     spdlog::info("continue with: netsph run --restart {} (checkpoint at t = {:.6g} s)",
@@ -353,7 +363,8 @@ int run_command(const RunArgs& args) {
   if (coll && (spec.net_only() || step_backend(backend) != StepBackend::Cpu)) {
     throw Error("mpirun", spec.net_only()
                               ? "a standalone net case (no fluid) runs as one process"
-                              : "a distributed run needs --backend cpu (one GPU per process is "
+                              : "a distributed run needs --backend cpu: the device-shaped step "
+                                "(cuda, host-device) runs in one process (one GPU per process is "
                                 "not supported yet)");
   }
   if (spec.net_only()) return run_net_only(spec, out, args.quiet);

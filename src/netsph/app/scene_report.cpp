@@ -82,10 +82,11 @@ std::string format_bytes(double b) {
 
 std::string describe_snapshots(const Simulation& sim, const SnapshotVolume& v) {
   const auto size = format_bytes;
-  return fmt::format("snapshots every {:g} s: {:.6g} of {} particles{}, {} each, {} in all",
-                     snapshot_interval(sim.spec()), v.count, v.particles,
-                     sim.spec().output.snapshot_region ? " (inside output.snapshot_region)" : "",
-                     size(v.bytes_each), size(v.total()));
+  return fmt::format(
+      "snapshots every {:g} s: {:.6g} snapshots of {} particles{}, {} each, {} in all",
+      snapshot_interval(sim.spec()), v.count, v.particles,
+      sim.spec().output.snapshot_region ? " (inside output.snapshot_region)" : "",
+      size(v.bytes_each), size(v.total()));
 }
 
 }  // namespace netsph::app

@@ -23,8 +23,8 @@ struct SnapshotVolume {
   double total() const { return bytes_each * count; }
 };
 SnapshotVolume snapshot_volume(const Simulation& sim, OutputParticles& particles);
-/// "snapshots every 0.1 s: 41 of 3.3e6 particles (inside output.snapshot_region), 190 MB each,
-/// 7.6 GB in all"
+/// "snapshots every 0.1 s: 41 snapshots of 3.3e6 particles (inside output.snapshot_region), 190 MB
+/// each, 7.6 GB in all"
 std::string describe_snapshots(const Simulation& sim, const SnapshotVolume& v);
 /// "5.8 MB", "7.7 GB"
 std::string format_bytes(double bytes);
