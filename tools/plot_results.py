@@ -138,7 +138,8 @@ def plot_standalone_forces(series, summary, case, out):
     """A standalone net run: the current's force on each net over time, the window shaded."""
     written = []
     t0, t1 = summary.get("force_window_s", [None, None])
-    for name in summary.get("nets", {}):
+    for n in summary.get("nets", []):
+        name = n["name"]
         if name + "_Fx" not in series:
             continue
         fig, ax = plt.subplots(figsize=(8, 4))
@@ -273,10 +274,7 @@ def main(argv):
         return 1
     with open(summary_path) as f:
         summary = json.load(f)
-    # A coupled run's summary holds the case as an object, a standalone net run's as its name.
-    case = summary.get("case", {})
-    if isinstance(case, dict):
-        case = case.get("name", os.path.basename(os.path.abspath(folder)))
+    case = summary.get("case", {}).get("name", os.path.basename(os.path.abspath(folder)))
     out = os.path.join(folder, "plots")
     os.makedirs(out, exist_ok=True)
     written = []
@@ -288,13 +286,12 @@ def main(argv):
         written += plot_time_step(series, case, out)
         written += plot_net_shapes(folder, summary, case, out, times)
         written += plot_probes(folder, summary, case, out)
-    elif isinstance(summary.get("nets"), dict) and os.path.exists(series_path):
-        # A standalone net run (no fluid): its summary keys the nets by name.
+    elif summary.get("mode") == "standalone net" and os.path.exists(series_path):
+        # A standalone net run (no fluid): nets in a current, no particles.
         series, _ = read_csv(series_path)
-        nets = {"nets": [{"name": name} for name in summary["nets"]]}
         written += plot_standalone_forces(series, summary, case, out)
-        written += plot_net_series(series, nets, case, out)
-        written += plot_net_shapes(folder, nets, case, out, times)
+        written += plot_net_series(series, summary, case, out)
+        written += plot_net_shapes(folder, summary, case, out, times)
     if not written:
         print(f"plot_results: nothing to plot in {folder}", file=sys.stderr)
         return 1

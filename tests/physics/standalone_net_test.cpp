@@ -72,7 +72,7 @@ TEST(StandaloneNet, AStoppedRunEndsAtItsRowWithEveryOutput) {
   int rows = 0;
   opt.stop = [&rows] { return ++rows == 3; };
   const NetRunReport r = run_standalone_nets(spec, opt);
-  EXPECT_EQ(r.status, "stopped");
+  EXPECT_EQ(r.status, "interrupted");
   EXPECT_LT(r.sim_time, spec.simulation.end_time / 10);
   EXPECT_GT(r.sim_time, 0.0);
   for (const char* file : {"summary.json", "knots_bi2014.csv", "profile_bi2014.csv",

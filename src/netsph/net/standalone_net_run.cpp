@@ -152,7 +152,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
       next_snapshot += snapshot_every;
     }
     if (stop) {
-      report.status = "stopped";
+      report.status = "interrupted";
       report.message = fmt::format("stopped by the user at t = {:.6g} s", t);
       break;
     }
@@ -164,17 +164,21 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   }
   report.sim_time = t;
 
+  // The layout of a coupled run's summary.json (solver/runner.cpp) where the two have the same
+  // things to say, so that one script reads both.
   nlohmann::json j;
-  j["case"] = spec.simulation.name;
+  j["netsph_version"] = NETSPH_VERSION;
+  j["case"] = {
+      {"name", spec.simulation.name}, {"source", spec.source}, {"overrides", spec.overrides}};
   j["mode"] = "standalone net";
   j["status"] = report.status;
-  j["time_s"] = t;
-  j["substeps"] = report.substeps;
+  if (!report.message.empty()) j["message"] = report.message;
   j["current"] = {{"velocity_m_s", {loads.velocity.x, loads.velocity.y, loads.velocity.z}},
                   {"model", loads.model == NetLoadModel::Screen    ? "screen"
                             : loads.model == NetLoadModel::Morison ? "morison"
                                                                    : "none"}};
   j["force_window_s"] = {report.window[0], report.window[1]};
+  j["nets"] = nlohmann::json::array();
   for (NetState& st : nets) {
     write_knots_csv(options.out_dir / ("knots_" + st.model.name + ".csv"), st.model, st.initial);
     write_profile_csv(options.out_dir / ("profile_" + st.model.name + ".csv"), st.model,
@@ -196,7 +200,19 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     s.drag_coefficient = q > 0 ? dot(s.mean_force, flow) / q : nan;
     s.max_deflection = max_normal_deflection(st.model, st.initial);
     report.nets.push_back(s);
-    j["nets"][s.name] = {{"knots", s.knots},
+    if (st.window_samples == 0) {
+      report.warnings.push_back(fmt::format(
+          "net '{}': {}, so its mean force and Cd are not measured (null)", s.name,
+          t < report.window[0]
+              ? fmt::format("the run ended at t = {:.6g} s, before output.force_window [{:.6g}, "
+                            "{:.6g}] s",
+                            t, report.window[0], report.window[1])
+              : fmt::format("no series row (every {:.6g} s) fell in output.force_window [{:.6g}, "
+                            "{:.6g}] s: widen the window or lower output.series_every",
+                            series_every, report.window[0], report.window[1])));
+    }
+    j["nets"].push_back({{"name", s.name},
+                         {"knots", s.knots},
                          {"twines", s.twines},
                          {"mean_force_N", {s.mean_force.x, s.mean_force.y, s.mean_force.z}},
                          {"mean_anchor_force_N",
@@ -204,11 +220,15 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
                          {"drag_N", dot(s.mean_force, flow)},
                          {"Cd_outline", s.drag_coefficient},
                          {"max_deflection_m", s.max_deflection},
-                         {"window_samples", st.window_samples}};
+                         {"window_samples", st.window_samples}});
   }
   report.wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  j["wall_time_s"] = report.wall_s;
+  j["time"] = {{"simulated_s", t}, {"end_time_s", end_time}, {"knot_substeps", report.substeps}};
+  j["performance"] = {{"wall_s", report.wall_s}};
+  j["outputs"] = {{"folder", std::filesystem::absolute(options.out_dir).string()},
+                  {"series", "series.csv"}};
+  j["warnings"] = report.warnings;
   write_file_atomic(options.out_dir / "summary.json", j.dump(2) + "\n");
   return report;
 }

@@ -28,8 +28,9 @@ struct NetRunSummary {
 };
 
 struct NetRunReport {
-  std::string status = "completed";  ///< completed | unstable | stopped
+  std::string status = "completed";  ///< completed | unstable | interrupted (as a coupled run)
   std::string message;
+  std::vector<std::string> warnings;  ///< also in summary.json
   double sim_time = 0;
   long long substeps = 0;
   double wall_s = 0;
@@ -40,7 +41,7 @@ struct NetRunReport {
 struct NetRunOptions {
   std::filesystem::path out_dir;
   bool progress = true;
-  /// Asked after every series row; true ends the run there with status "stopped", its
+  /// Asked after every series row; true ends the run there with status "interrupted", its
   /// outputs written as at the end (Ctrl-C in `netsph run`).
   std::function<bool()> stop;
 };
