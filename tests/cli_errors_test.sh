@@ -2,7 +2,9 @@
 # Command-line mistakes end in one clear line naming the option, before any work is done:
 # a case after --set stays the case; an output folder that cannot be made (a file in the
 # way) names -o and the reason, for run, net and validate; bench checks every size and its
-# --json folder before the first run.
+# --json folder before the first run. Then what two hostile-input sweeps (2026-12-05) found:
+# inputs that crashed or misreported, and short runs whose outputs said too little (a run
+# into an earlier run's folder, a force window no sample reached, a probe in a wall).
 set -euo pipefail
 netsph="$1"
 case_file="$2"   # cases/dambreak2d.toml
