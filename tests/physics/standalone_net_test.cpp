@@ -75,8 +75,8 @@ TEST(StandaloneNet, AStoppedRunEndsAtItsRowWithEveryOutput) {
   EXPECT_EQ(r.status, "interrupted");
   EXPECT_LT(r.sim_time, spec.simulation.end_time / 10);
   EXPECT_GT(r.sim_time, 0.0);
-  for (const char* file : {"summary.json", "knots_bi2014.csv", "profile_bi2014.csv",
-                           "series.csv", "bi2014.vtk.series"})
+  for (const char* file : {"summary.json", "knots_bi2014.csv", "profile_bi2014.csv", "series.csv",
+                           "bi2014.vtk.series"})
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
 }
 
@@ -84,10 +84,9 @@ TEST(StandaloneNet, AStoppedRunEndsAtItsRowWithEveryOutput) {
 TEST(StandaloneNet, CdWithoutACurrentIsUndefined) {
   const auto dir = std::filesystem::temp_directory_path() / "netsph_standalone_net_still_test";
   std::filesystem::remove_all(dir);
-  const CaseSpec spec =
-      read_case_file(std::string(NETSPH_CASES_DIR) + "/net_bi2014_standalone.toml",
-                     {"current.velocity=[0, 0, 0]", "simulation.end_time=0.5",
-                      "output.force_window=[0, 0.5]"});
+  const CaseSpec spec = read_case_file(
+      std::string(NETSPH_CASES_DIR) + "/net_bi2014_standalone.toml",
+      {"current.velocity=[0, 0, 0]", "simulation.end_time=0.5", "output.force_window=[0, 0.5]"});
   NetRunOptions opt;
   opt.out_dir = dir;
   opt.progress = false;

@@ -126,8 +126,7 @@ TEST(CaseOverrides, MalformedOptionsPointAtSet) {
   // A negative or oversized index is named as not an index (it suggested "wall.0.-1").
   for (const std::string option : {"wall.-1.layers=2", "wall.99999999999999999999.layers=2"}) {
     const std::string m = error_with({option}).message();
-    EXPECT_NE(m.find("is not an index; the entries of wall are numbered from 0"),
-              std::string::npos)
+    EXPECT_NE(m.find("is not an index; the entries of wall are numbered from 0"), std::string::npos)
         << m;
     EXPECT_EQ(m.find("e.g. wall.0."), std::string::npos) << m;
   }
