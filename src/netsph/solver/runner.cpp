@@ -85,19 +85,24 @@ std::vector<std::string> window_warnings(const nlohmann::json& summary) {
     return fmt::format("[{:.6g}, {:.6g}] s", j["window_s"][0].get<double>(),
                        j["window_s"][1].get<double>());
   };
+  // A run stopped (or unstable, or cut by --max-steps) before its window is another story
+  // than a window too short to hold a step.
+  const double ended = summary.value("time", nlohmann::json::object()).value("simulated_s", 0.0);
+  const auto why = [&](const nlohmann::json& j) {
+    if (ended < j["window_s"][0].get<double>())
+      return fmt::format("the run ended at t = {:.6g} s, before output.force_window {}", ended,
+                         window(j));
+    return fmt::format("no time step fell in output.force_window {} (widen it)", window(j));
+  };
   for (const auto& g : summary.value("bodies", nlohmann::json::array())) {
     if (g.value("averaged_over_s", 1.0) > 0) continue;
-    w.push_back(
-        fmt::format("force group '{}': no time step fell in output.force_window {}, so "
-                    "its mean force is not measured; widen the window",
-                    g.value("group", std::string("?")), window(g)));
+    w.push_back(fmt::format("force group '{}': {}, so its mean force is not measured",
+                            g.value("group", std::string("?")), why(g)));
   }
   for (const auto& n : summary.value("nets", nlohmann::json::array())) {
     if (n.contains("mean_max_deflection_m")) continue;
-    w.push_back(
-        fmt::format("net '{}': no time step fell in output.force_window {}, so its mean "
-                    "deflection and tension are not measured; widen the window",
-                    n.value("name", std::string("?")), window(n)));
+    w.push_back(fmt::format("net '{}': {}, so its mean deflection and tension are not measured",
+                            n.value("name", std::string("?")), why(n)));
   }
   for (const auto& p : summary.value("probes", nlohmann::json::array())) {
     if (p.contains("mean_coverage") && p["mean_coverage"].get<double>() < 0.5) {
@@ -108,6 +113,11 @@ std::vector<std::string> window_warnings(const nlohmann::json& summary) {
           p.value("name", std::string("?")), p["mean_coverage"].get<double>(), window(p)));
     }
     if (p.value("samples", 1) > 0) continue;
+    if (ended < p["window_s"][0].get<double>()) {
+      w.push_back(fmt::format("probe '{}': {}, so its means are empty",
+                              p.value("name", std::string("?")), why(p)));
+      continue;
+    }
     w.push_back(
         fmt::format("probe '{}': no sample in output.force_window {}: the window lies "
                     "between two samples (every output.series_every, or the probe's "
