@@ -59,6 +59,30 @@ extern "C" void on_interrupt(int) {
   request_stop();
 }
 
+/// The case a run folder's summary.json says its run ran (none without a readable one: a run
+/// killed before its end writes none).
+struct FolderCase {
+  std::string name, source;
+  std::vector<std::string> sets;  ///< its --set overrides
+};
+std::optional<FolderCase> case_of_run_folder(const std::filesystem::path& dir) {
+  std::ifstream in(dir / "summary.json");
+  if (!in) return std::nullopt;
+  const nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
+  if (s.is_discarded() || !s.is_object() || !s.contains("case")) return std::nullopt;
+  const nlohmann::json& c = s["case"];
+  if (!c.is_object() || !c.contains("name") || !c["name"].is_string() || !c.contains("source") ||
+      !c["source"].is_string()) {
+    return std::nullopt;
+  }
+  FolderCase f{c["name"].get<std::string>(), c["source"].get<std::string>(), {}};
+  if (c.contains("overrides") && c["overrides"].is_array()) {
+    for (const nlohmann::json& o : c["overrides"])
+      if (o.is_string()) f.sets.push_back(o.get<std::string>());
+  }
+  return f;
+}
+
 /// A new run into a folder that holds an earlier run replaces it: said, not done silently, and
 /// done whole at once. The earlier run's checkpoint.h5 and summary.json go now, so that a new
 /// run stopped early never leaves the old checkpoint and summary beside its own series and
@@ -70,14 +94,9 @@ void replace_earlier_run(const std::filesystem::path& out) {
   std::error_code ec;
   const bool had_summary = fs::exists(summary, ec), had_checkpoint = fs::exists(checkpoint, ec);
   if (!had_summary && !had_checkpoint) return;
-  std::string what = "an earlier run";
-  if (std::ifstream in(summary); in) {
-    const nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
-    if (s.is_object() && s.contains("case") && s["case"].is_object() &&
-        s["case"].contains("name") && s["case"]["name"].is_string()) {
-      what = fmt::format("an earlier run of case '{}'", s["case"]["name"].get<std::string>());
-    }
-  }
+  const std::optional<FolderCase> earlier = case_of_run_folder(out);
+  const std::string what =
+      earlier ? fmt::format("an earlier run of case '{}'", earlier->name) : "an earlier run";
   spdlog::warn(
       "{} holds {}: this run replaces it (its snapshots, series.csv, summary.json{}). To keep a "
       "run, give each its own folder with -o; to continue one, use netsph run --restart {}",
@@ -206,23 +225,12 @@ std::string describe_case(const std::string& name, const std::string& source,
 /// taken as its own.
 void check_checkpoint_is_the_folders(const std::string& dir, const CaseSpec& spec,
                                      const std::vector<std::string>& recorded) {
+  const std::optional<FolderCase> folder = case_of_run_folder(dir);
+  if (!folder) return;
   const std::filesystem::path summary = std::filesystem::path(dir) / "summary.json";
-  std::ifstream in(summary);
-  if (!in) return;
-  const nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
-  if (s.is_discarded() || !s.is_object() || !s.contains("case")) return;
-  const nlohmann::json& c = s["case"];
-  if (!c.is_object() || !c.contains("name") || !c["name"].is_string() || !c.contains("source") ||
-      !c["source"].is_string()) {
-    return;
-  }
-  const std::string name = c["name"].get<std::string>();
-  const std::string source = c["source"].get<std::string>();
-  std::vector<std::string> sets;
-  if (c.contains("overrides") && c["overrides"].is_array()) {
-    for (const nlohmann::json& o : c["overrides"])
-      if (o.is_string()) sets.push_back(o.get<std::string>());
-  }
+  const std::string& name = folder->name;
+  const std::string& source = folder->source;
+  const std::vector<std::string>& sets = folder->sets;
   const std::size_t common = std::min(sets.size(), recorded.size());
   const std::vector<std::string>& longer = sets.size() > recorded.size() ? sets : recorded;
   const bool same_sets = std::equal(sets.begin(), sets.begin() + common, recorded.begin()) &&
