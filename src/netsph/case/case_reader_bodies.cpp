@@ -152,6 +152,50 @@ Quat align_x_to(const Vec3d& d) {
   return Quat{w / n, 0, -d.z / n, d.y / n};
 }
 
+/// A shape's largest length and the key that sets it; in 2D (the x-z plane) lengths along y
+/// do not count.
+struct LongestLength {
+  double length = 0;
+  std::string_view key;
+};
+LongestLength longest_length(ShapeKind kind, const BodySpec& body, bool flat) {
+  LongestLength l;
+  const auto consider = [&](double length, std::string_view key) {
+    if (length > l.length) l = {length, key};
+  };
+  switch (kind) {
+    case ShapeKind::Box:
+      consider(body.lengths.x, "size");
+      if (!flat) consider(body.lengths.y, "size");
+      consider(body.lengths.z, "size");
+      break;
+    case ShapeKind::Plate:
+      consider(body.lengths.x, "thickness");
+      if (!flat) consider(body.lengths.y, "width");
+      consider(body.lengths.z, "height");
+      break;
+    case ShapeKind::SquarePlate:
+      consider(body.lengths.x, "thickness");
+      consider(body.lengths.z, "side");
+      break;
+    case ShapeKind::CircularPlate:
+      consider(body.diameter, "diameter");
+      consider(body.length, "thickness");
+      break;
+    case ShapeKind::Cylinder:
+      consider(body.diameter, "diameter");
+      if (!flat) consider(body.length, "length");
+      break;
+    case ShapeKind::Sphere:
+      consider(body.diameter, "diameter");
+      break;
+    case ShapeKind::Cruciform:
+      consider(body.length, "twine_length");
+      break;
+  }
+  return l;
+}
+
 }  // namespace
 
 // ---- [[body]] -----------------------------------------------------------------------------
@@ -280,53 +324,19 @@ void CaseReader::read_body_shape(const TomlTableReader& r, BodySpec& body) const
       }
       break;
   }
-  check_body_fits_domain(r, body, static_cast<int>(kind));
+  const LongestLength longest = longest_length(kind, body, is_2d());
+  check_body_fits_domain(r, longest.length, longest.key);
 }
 
 /// A body longer than [domain]'s diagonal has particles outside it whatever its centre and
 /// orientation; said here, at its size, before its particles are built (a box 1e6 m long at
 /// dp = 0.02 m took gigabytes and minutes to reach the particle check, or ran out of memory).
 /// Its particles span at least its largest length less dp along that length.
-void CaseReader::check_body_fits_domain(const TomlTableReader& r, const BodySpec& body,
-                                        int shape_kind) const {
+void CaseReader::check_body_fits_domain(const TomlTableReader& r, double longest,
+                                        std::string_view key) const {
   const DomainSpec& d = spec_.domain;
   if (!d.given) return;
-  const bool flat = is_2d();  // the plane is x-z: lengths along y do not count
-  double longest = 0;
-  std::string_view key;
-  const auto consider = [&](double length, std::string_view k) {
-    if (length > longest) longest = length, key = k;
-  };
-  switch (static_cast<ShapeKind>(shape_kind)) {
-    case ShapeKind::Box:
-      consider(body.lengths.x, "size");
-      if (!flat) consider(body.lengths.y, "size");
-      consider(body.lengths.z, "size");
-      break;
-    case ShapeKind::Plate:
-      consider(body.lengths.x, "thickness");
-      if (!flat) consider(body.lengths.y, "width");
-      consider(body.lengths.z, "height");
-      break;
-    case ShapeKind::SquarePlate:
-      consider(body.lengths.x, "thickness");
-      consider(body.lengths.z, "side");
-      break;
-    case ShapeKind::CircularPlate:
-      consider(body.diameter, "diameter");
-      consider(body.length, "thickness");
-      break;
-    case ShapeKind::Cylinder:
-      consider(body.diameter, "diameter");
-      if (!flat) consider(body.length, "length");
-      break;
-    case ShapeKind::Sphere:
-      consider(body.diameter, "diameter");
-      break;
-    case ShapeKind::Cruciform:
-      consider(body.length, "twine_length");
-      break;
-  }
+  const bool flat = is_2d();
   const Vec3d span = d.max - d.min;
   const double diagonal =
       std::sqrt(span.x * span.x + span.z * span.z + (flat ? 0.0 : span.y * span.y));

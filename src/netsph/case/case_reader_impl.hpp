@@ -1,6 +1,7 @@
 #pragma once
-// The case-file schema and the CaseReader class, shared by case_reader.cpp (the top-level
-// tables: [simulation], [fluid], [domain], [[fill]], [output]), case_reader_boundaries.cpp
+// The case-file schema (its keys in case_schema.cpp) and the CaseReader class, shared by
+// case_reader.cpp (the top-level tables: [simulation], [fluid], [domain], [[fill]], [output]),
+// case_reader_boundaries.cpp
 // ([[wall]], [[inlet]], [[outlet]]), case_reader_bodies.cpp ([[body]]) and
 // case_reader_nets.cpp ([[net]], [current]). Private to the
 // case module (includes toml++).
@@ -137,8 +138,8 @@ class CaseReader {
   void read_bodies();
   BodySpec read_body(const toml::table& table, int number) const;
   void read_body_shape(const TomlTableReader& r, BodySpec& body) const;
-  /// `shape_kind`: the reader's ShapeKind (case_reader_bodies.cpp), as an int.
-  void check_body_fits_domain(const TomlTableReader& r, const BodySpec& body, int shape_kind) const;
+  /// A body whose `longest` length (set by `key`) exceeds [domain]'s diagonal cannot fit in it.
+  void check_body_fits_domain(const TomlTableReader& r, double longest, std::string_view key) const;
   Quat read_body_orientation(const TomlTableReader& r, const BodySpec& body) const;
   /// A non-zero direction, normalised; y must be 0 in 2D unless `along_y_in_2d`, which
   /// requires x = z = 0 instead.
