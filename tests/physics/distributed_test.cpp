@@ -1,6 +1,8 @@
 // A run split into slabs over several processes (distributed/) against the same case on one:
-// after N steps every particle, dt and body must agree to float round-off (each process sums
-// a particle's pairs in its own order). The processes here are threads of the test with
+// after N steps every particle and dt must be the same to the bit (each process sums a
+// particle's pairs in the order of the one-process run: state_difference.hpp, expect_identical),
+// and with bodies or nets, whose loads are double sums over the processes in another order,
+// agree to float round-off (expect_parity). The processes here are threads of the test with
 // in-process collectives (distributed/thread_collectives.hpp), so the decomposition, halo and
 // exchange are checked without mpirun; tests/distributed_mpi_test.sh runs the same step under
 // mpirun.
@@ -90,15 +92,14 @@ Difference compare_split(const CaseSpec& spec, int processes, int steps,
 // DBC walls and a free surface: the dam's front crosses the slab boundaries.
 TEST(Distributed, DamBreak2DOnThreeProcessesMatchesOne) {
   const CaseSpec spec = test::load_case("dambreak2d.toml", {"simulation.dp=0.04"});
-  test::expect_parity(compare_split(spec, 3, 200));
+  test::expect_identical(compare_split(spec, 3, 200));
 }
 
 // As the water column collapses and runs along the tank, the slabs cut at the start leave the
 // process at the front with little water and the others with more: the slabs are cut again
 // (RebalancePolicy), and the particles that changed slab move at once. Over the 1500 steps
-// (0.75 s: the surge reaches the far wall) the two runs' results drift apart as any two
-// decompositions' do once the surge breaks (one process against three: 0.007 dp with or
-// without rebalancing), so the results are compared below over a shorter run.
+// (0.75 s: the surge reaches the far wall and breaks) the runs with and without cutting again
+// stay the same to the bit: each sums every pair in the order of the run on one process.
 TEST(Distributed, SlabsAreCutAgainAsTheDamBreaks) {
   const CaseSpec spec = test::load_case("dambreak2d.toml", {"simulation.dp=0.04"});
   const int steps = 1500;
@@ -118,14 +119,19 @@ TEST(Distributed, SlabsAreCutAgainAsTheDamBreaks) {
   EXPECT_GT(fixed.imbalance(), 1.3) << "the flow no longer unbalances the slabs: test nothing";
   EXPECT_GT(moving.rebalances, 0);
   EXPECT_LE(moving.imbalance(), RebalancePolicy{}.threshold);
+  test::Difference d = test::state_difference(*fixed.whole, *moving.whole);
+  ASSERT_EQ(fixed.dts.size(), moving.dts.size());
+  for (std::size_t s = 0; s < fixed.dts.size(); ++s)
+    d.dt = std::max(d.dt, std::fabs(moving.dts[s] / fixed.dts[s] - 1));
+  test::expect_identical(d);
 }
 
 // Cut again early and often (at 2% out of balance, every 10 steps): the results are those of
-// one process to round-off.
+// one process, to the bit.
 TEST(Distributed, SlabsCutAgainGiveTheResultsOfOneProcess) {
   const CaseSpec spec = test::load_case("dambreak2d.toml", {"simulation.dp=0.04"});
   SplitRun split;
-  test::expect_parity(compare_split(spec, 3, 800, RebalancePolicy{10, 1.02}, &split));
+  test::expect_identical(compare_split(spec, 3, 800, RebalancePolicy{10, 1.02}, &split));
   std::printf("slabs cut again %d times\n", split.rebalances);
   EXPECT_GE(split.rebalances, 2);
 }
@@ -136,12 +142,12 @@ TEST(Distributed, DamBreak3DWithMdbcAndShiftingOnTwoProcessesMatchesOne) {
       "dambreak3d.toml",
       {"simulation.dp=0.03", "simulation.kernel=\"cubic_spline\"", "wall.0.model=\"mdbc\"",
        "wall.0.layers=3", "fluid.shifting={model=\"fickian\"}"});
-  test::expect_parity(compare_split(spec, 2, 40));
+  test::expect_identical(compare_split(spec, 2, 40));
 }
 
 // Periodic along the split axis (each process's halo wraps round), moving mDBC walls.
 TEST(Distributed, PeriodicCouetteOnTwoProcessesMatchesOne) {
-  test::expect_parity(compare_split(test::load_case("couette2d.toml"), 2, 200));
+  test::expect_identical(compare_split(test::load_case("couette2d.toml"), 2, 200));
 }
 
 // A floating mDBC box: its loads are summed over the processes that own its particles.
@@ -181,7 +187,7 @@ TEST(Distributed, CoupledNetOnTwoProcessesMatchesOne) {
 // holding a copy of their parent, those removed at the outlet are not counted as lost, and
 // the split run creates and removes exactly what the one-process run does.
 TEST(Distributed, OpenChannelOnTwoProcessesMatchesOne) {
-  test::expect_parity(compare_split(test::load_case("channel2d.toml"), 2, 300));
+  test::expect_identical(compare_split(test::load_case("channel2d.toml"), 2, 300));
 }
 
 // The same with the knot, its twine and the inlet and outlet of the case as written.

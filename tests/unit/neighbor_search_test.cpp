@@ -124,20 +124,37 @@ TEST(NeighborSearch, ParticlesOutsideTheGridAreDropped) {
   EXPECT_EQ(kept, (std::vector<std::uint32_t>{0, 3}));
 }
 
-TEST(NeighborSearch, SortIsStableAndByCell) {
+// By cell, and within a cell by position, whatever order the particles came in: a run split
+// over processes (or restarted) then sums each particle's pairs in the same order as the run
+// on one process (cell_grid.cpp).
+TEST(NeighborSearch, SortIsByCellThenByPositionWhateverTheEarlierOrder) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3d> pos(500);
   for (auto& p : pos) p = {u(rng), u(rng), u(rng)};
+  pos[7] = {pos[3].x, pos[3].y, 0.5};  // equal in x and y: ordered by z
+  pos[8] = {0.5, pos[3].y, pos[3].z};  // equal in y and z: ordered by x
   CellGrid grid;
-  grid.configure({0, 0, 0}, {1, 1, 1}, 0.2, 0.0, 3);
+  grid.configure({0, 0, 0}, {1, 1, 1}, 0.6, 0.0, 3);  // 4 x 4 x 4 cells, about 8 particles each
   std::vector<std::uint32_t> order;
   grid.sort(pos, order);
   ASSERT_EQ(order.size(), pos.size());
+  const auto before = [](const Vec3d& a, const Vec3d& b) {
+    return a.z != b.z ? a.z < b.z : a.y != b.y ? a.y < b.y : a.x < b.x;
+  };
   for (std::size_t s = 1; s < order.size(); ++s) {
-    const auto c0 = grid.cell_of(pos[order[s - 1]]), c1 = grid.cell_of(pos[order[s]]);
-    EXPECT_TRUE(c0 < c1 || (c0 == c1 && order[s - 1] < order[s]));
+    const Vec3d &a = pos[order[s - 1]], &b = pos[order[s]];
+    const auto c0 = grid.cell_of(a), c1 = grid.cell_of(b);
+    EXPECT_TRUE(c0 < c1 || (c0 == c1 && before(a, b))) << s;
   }
+  // The same particles in another order: the same sorted sequence.
+  std::vector<Vec3d> shuffled = pos;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  std::vector<std::uint32_t> again;
+  grid.sort(shuffled, again);
+  ASSERT_EQ(again.size(), order.size());
+  for (std::size_t s = 0; s < order.size(); ++s)
+    EXPECT_EQ(shuffled[again[s]], pos[order[s]]) << s;
 }
 
 }  // namespace

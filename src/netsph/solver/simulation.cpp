@@ -455,6 +455,9 @@ void Simulation::step() {
   advance_bodies(false, dt);
   double moved = symplectic_predictor(p_, in, m);
   moved = std::max(moved, place_body_particles(true));
+  // Split over processes, all sort again when one must: a particle's candidates then come
+  // from the cells, and its pair sums in the order, of the run on one process (cell_grid.cpp).
+  if (partition_) moved = partition_->global_max(moved);
   if (moved > grid_.max_displacement()) {
     sort_particles(true);
     ++diag_.resorts;
