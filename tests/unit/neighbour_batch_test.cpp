@@ -1,8 +1,8 @@
 // The CPU fluid pass's candidate scan (backend/cpu/neighbour_batch.hpp): every candidate within
 // the support and no other, in index order, with the r^2 the pair loop needs and the fields it
-// was asked to carry, and batches summed exactly at the capacity; the AVX-512 scan (when the
-// build has it) must give the same batches bit for bit as the scalar one, so that the rates do
-// not depend on the build.
+// was asked to carry, and batches summed exactly at the capacity; the AVX-512 and AVX2 scans
+// (when the build has them) must give the same batches bit for bit as the scalar one, so that
+// the rates do not depend on the build.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -143,11 +143,11 @@ TEST(NeighbourBatch, ARequiredFlagLeavesOutTheCandidatesWithoutIt) {
   for (const Entry& e : d.rest) EXPECT_EQ(e.j % 2, 1);
 }
 
-#if defined(__AVX512F__)
-TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
-  const auto vector = [](const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
-                         NeighbourBatch& batch,
-                         auto&& sum) { scan_range_avx512(s, b0, b1, batch, sum); };
+/// A vector scan against the scalar one: the same batches, bit for bit, over random clouds cut
+/// into ranges of 0 to 40 candidates (shorter and longer than the vector, ending anywhere in
+/// it), with and without a required flag and with 0 to 9 carried fields.
+template <class Scan>
+void expect_the_scalar_scans_batches(Scan vector) {
   for (unsigned seed = 0; seed < 20; ++seed) {
     const Cloud c = cloud(700, seed % 2 ? 3.0f : 1.2f, seed);
     std::mt19937 gen(seed);
@@ -180,9 +180,30 @@ TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
     EXPECT_EQ(a.rest, b.rest) << "seed " << seed;
   }
 }
+
+#if defined(__AVX512F__)
+TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
+  expect_the_scalar_scans_batches([](const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
+                                     NeighbourBatch& batch,
+                                     auto&& sum) { scan_range_avx512(s, b0, b1, batch, sum); });
+}
 #else
 TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
-  GTEST_SKIP() << "this build has no AVX-512 (the scalar scan runs)";
+  GTEST_SKIP() << "this build has no AVX-512";
+}
+#endif
+
+// Built with AVX-512 too (which then scans with AVX-512), so an AVX-512 machine checks the
+// scan that AVX2 machines run.
+#if defined(__AVX2__) && defined(__FMA__)
+TEST(NeighbourBatch, Avx2ScanDeliversTheScalarScansBatchesBitForBit) {
+  expect_the_scalar_scans_batches([](const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
+                                     NeighbourBatch& batch,
+                                     auto&& sum) { scan_range_avx2(s, b0, b1, batch, sum); });
+}
+#else
+TEST(NeighbourBatch, Avx2ScanDeliversTheScalarScansBatchesBitForBit) {
+  GTEST_SKIP() << "this build has no AVX2 with FMA";
 }
 #endif
 
