@@ -47,6 +47,17 @@ struct NeighbourBatch {
     for (int c = 0; c < ncarried; ++c) std::memmove(carried[c], carried[c] + kCapacity, bytes);
     n = rest;
   }
+
+  /// After a vector scan stored `hits` more entries whole: counts them, and when the batch
+  /// then holds kCapacity or more, sum(batch) takes the first kCapacity and they are dropped.
+  template <class Sum>
+  void add_vector_hits(int hits, int ncarried, Sum&& sum) {
+    n += hits;
+    if (n >= kCapacity) {
+      sum(*this);
+      drop_full_batch(ncarried);
+    }
+  }
 };
 
 /// Where a candidate range is scanned: particle a's position less the range's periodic shift
@@ -136,11 +147,7 @@ inline void scan_range_avx512(const CandidateScan& s, std::uint32_t b0, std::uin
       const __m512 field = _mm512_maskz_loadu_ps(hit, s.carry[c] + b);
       _mm512_storeu_ps(batch.carried[c] + q, _mm512_maskz_compress_ps(hit, field));
     }
-    batch.n = q + __builtin_popcount(hit);
-    if (batch.n >= NeighbourBatch::kCapacity) {
-      sum(batch);
-      batch.drop_full_batch(s.ncarry);
-    }
+    batch.add_vector_hits(__builtin_popcount(hit), s.ncarry, sum);
   }
 }
 #endif
@@ -202,11 +209,7 @@ inline void scan_range_avx2(const CandidateScan& s, std::uint32_t b0, std::uint3
       const __m256 field = _mm256_maskload_ps(s.carry[c] + b, live);
       _mm256_storeu_ps(batch.carried[c] + q, _mm256_permutevar8x32_ps(field, pack));
     }
-    batch.n = q + __builtin_popcount(hit);
-    if (batch.n >= NeighbourBatch::kCapacity) {
-      sum(batch);
-      batch.drop_full_batch(s.ncarry);
-    }
+    batch.add_vector_hits(__builtin_popcount(hit), s.ncarry, sum);
   }
 }
 #endif
