@@ -132,10 +132,13 @@ TEST(NeighborSearch, SortIsByCellThenByPositionWhateverTheEarlierOrder) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3d> pos(500);
   for (auto& p : pos) p = {u(rng), u(rng), u(rng)};
-  pos[7] = {pos[3].x, pos[3].y, 0.5};  // equal in x and y: ordered by z
-  pos[8] = {0.5, pos[3].y, pos[3].z};  // equal in y and z: ordered by x
+  // In particle 3's cell: one at its z (ordered by y), one at its z and y (ordered by x).
+  pos[7] = {pos[3].x, pos[3].y - 0.01, pos[3].z};
+  pos[8] = {pos[3].x - 0.01, pos[3].y, pos[3].z};
   CellGrid grid;
   grid.configure({0, 0, 0}, {1, 1, 1}, 0.6, 0.0, 3);  // 4 x 4 x 4 cells, about 8 particles each
+  ASSERT_EQ(grid.cell_of(pos[7]), grid.cell_of(pos[3]));
+  ASSERT_EQ(grid.cell_of(pos[8]), grid.cell_of(pos[3]));
   std::vector<std::uint32_t> order;
   grid.sort(pos, order);
   ASSERT_EQ(order.size(), pos.size());
@@ -153,8 +156,7 @@ TEST(NeighborSearch, SortIsByCellThenByPositionWhateverTheEarlierOrder) {
   std::vector<std::uint32_t> again;
   grid.sort(shuffled, again);
   ASSERT_EQ(again.size(), order.size());
-  for (std::size_t s = 0; s < order.size(); ++s)
-    EXPECT_EQ(shuffled[again[s]], pos[order[s]]) << s;
+  for (std::size_t s = 0; s < order.size(); ++s) EXPECT_EQ(shuffled[again[s]], pos[order[s]]) << s;
 }
 
 }  // namespace

@@ -64,8 +64,9 @@ class CellGrid {
 
   /// Sorts by cell, and within a cell by position (cell_grid.cpp says why). Fills `order`
   /// (sorted slot -> old index; particles outside the grid are left out) and the cell ranges.
-  /// The order is a function of the positions alone: the same for any thread count, any
-  /// earlier order of the particles, and any split of them over processes.
+  /// The order is a function of the positions alone (but for particles at one position,
+  /// kept in their earlier order): the same for any thread count, any earlier order of the
+  /// particles, and any split of them over processes.
   void sort(std::span<const Vec3d> pos, std::vector<std::uint32_t>& order);
 
   /// Adopts the cell table of a sort made elsewhere with the same index (the device step's):

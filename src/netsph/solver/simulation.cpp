@@ -453,10 +453,12 @@ void Simulation::step() {
   start_.save(p_);
   reduce_body_forces();
   advance_bodies(false, dt);
-  double moved = symplectic_predictor(p_, in, m);
+  // Split over processes, the largest displacement of the particles each owns (a halo copy
+  // of a buffer particle near the halo's edge moves by one-sided ghost-node sums), and over
+  // the processes: the one-process run's. So all sort again when it would, and a particle's
+  // candidates come from its cells, its pair sums in its order (neighbors/cell_grid.cpp).
+  double moved = symplectic_predictor(p_, in, m, partition_ ? owned_.data() : nullptr);
   moved = std::max(moved, place_body_particles(true));
-  // Split over processes, all sort again when one must: a particle's candidates then come
-  // from the cells, and its pair sums in the order, of the run on one process (cell_grid.cpp).
   if (partition_) moved = partition_->global_max(moved);
   if (moved > grid_.max_displacement()) {
     sort_particles(true);

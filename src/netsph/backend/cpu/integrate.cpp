@@ -15,7 +15,8 @@ void StepStart::save(const ParticleSet& p) {
   for (std::int64_t i = 0; i < n; ++i) vel[i] = p.vel[i], rho[i] = p.rho[i];
 }
 
-double symplectic_predictor(ParticleSet& p, const StageInputs& in, const FluidModel& m) {
+double symplectic_predictor(ParticleSet& p, const StageInputs& in, const FluidModel& m,
+                            const std::uint8_t* counted) {
   const auto n = static_cast<std::int64_t>(p.size());
   double max_d2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max_d2)
@@ -24,7 +25,7 @@ double symplectic_predictor(ParticleSet& p, const StageInputs& in, const FluidMo
     const WallKinematics* wall = k == ParticleKind::Wall ? &in.walls[p.group[i]] : nullptr;
     const double d2 = symplectic_predict_particle(k, wall, in.acc[i], in.drho[i], in.dt, m.eos.rho0,
                                                   p.pos[i], p.vel[i], p.rho[i]);
-    max_d2 = std::max(max_d2, d2);
+    if (!counted || counted[i]) max_d2 = std::max(max_d2, d2);
   }
   return std::sqrt(max_d2);
 }

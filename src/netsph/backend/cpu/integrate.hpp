@@ -34,8 +34,10 @@ struct StageInputs {
 };
 
 /// Half-step state from the state at the step start (in p). Returns the largest
-/// displacement, m.
-double symplectic_predictor(ParticleSet& p, const StageInputs& in, const FluidModel& m);
+/// displacement, m, over the particles with counted[i] != 0 (all when null: a process of a
+/// distributed run counts those it owns, whose displacements are the one-process run's).
+double symplectic_predictor(ParticleSet& p, const StageInputs& in, const FluidModel& m,
+                            const std::uint8_t* counted = nullptr);
 
 /// Full step; with `shifting`, fluid particles are shifted (sph/shifting.hpp). Returns the
 /// index of a particle whose new state is not finite, or -1.

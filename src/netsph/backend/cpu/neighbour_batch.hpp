@@ -8,9 +8,9 @@
 // With AVX-512 the scan tests 16 candidates at a time and compacts the hits with vcompressps
 // into registers, stored whole (the batch has 16 entries of slack for the lanes past the hits);
 // with AVX2 and FMA (x86-64-v3), 8 at a time, compacted by a lane permutation looked up from
-// the hit mask; without either, one candidate at a time with a branch, about 3.3 times slower
-// on the benchmark (docs/PERFORMANCE.md, "Instruction sets"). All give the same neighbours in
-// the same order with the same float arithmetic, so the rates do not depend on which one ran
+// the hit mask; without either, one candidate at a time with a branch (docs/PERFORMANCE.md,
+// "Instruction sets", has what each costs). Within a build all give the same neighbours in the
+// same order with the same float arithmetic, so the rates do not depend on which one ran
 // (tests/unit/neighbour_batch_test.cpp).
 #include <cstdint>
 #include <cstring>
