@@ -195,7 +195,7 @@ TEST(NeighbourBatch, Avx512ScanDeliversTheScalarScansBatchesBitForBit) {
 
 // Built with AVX-512 too (which then scans with AVX-512), so an AVX-512 machine checks the
 // scan that AVX2 machines run.
-#if defined(__AVX2__) && defined(__FMA__)
+#if defined(NETSPH_SCAN_AVX2)
 TEST(NeighbourBatch, Avx2ScanDeliversTheScalarScansBatchesBitForBit) {
   expect_the_scalar_scans_batches([](const CandidateScan& s, std::uint32_t b0, std::uint32_t b1,
                                      NeighbourBatch& batch,

@@ -17,7 +17,12 @@
 
 #include "netsph/core/real.hpp"
 
-#if defined(__AVX512F__) || (defined(__AVX2__) && defined(__FMA__))
+// The AVX2 scan needs FMA too: its r^2 must round as offset_r2's does.
+#if defined(__AVX2__) && defined(__FMA__)
+#define NETSPH_SCAN_AVX2 1
+#endif
+
+#if defined(__AVX512F__) || defined(NETSPH_SCAN_AVX2)
 #include <immintrin.h>
 #endif
 
@@ -152,7 +157,7 @@ inline void scan_range_avx512(const CandidateScan& s, std::uint32_t b0, std::uin
 }
 #endif
 
-#if defined(__AVX2__) && defined(__FMA__)
+#if defined(NETSPH_SCAN_AVX2)
 namespace detail {
 /// For each mask of 8 lanes, the lanes it selects in increasing order, one byte each from the
 /// lowest: the permutation that packs a vector's hits to its front, as vcompressps does.
@@ -220,7 +225,7 @@ inline void scan_range(const CandidateScan& s, std::uint32_t b0, std::uint32_t b
                        NeighbourBatch& batch, Sum&& sum) {
 #if defined(__AVX512F__)
   scan_range_avx512(s, b0, b1, batch, sum);
-#elif defined(__AVX2__) && defined(__FMA__)
+#elif defined(NETSPH_SCAN_AVX2)
   scan_range_avx2(s, b0, b1, batch, sum);
 #else
   scan_range_scalar(s, b0, b1, batch, sum);
