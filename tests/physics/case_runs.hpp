@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "netsph/case/case_reader.hpp"
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 #include "netsph/solver/simulation.hpp"
 #include "netsph/sph/kernels.hpp"
 

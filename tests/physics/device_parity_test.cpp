@@ -22,8 +22,8 @@
 
 #include "case_runs.hpp"
 #include "netsph/io/checkpoint_file.hpp"
-#include "netsph/solver/output_particles.hpp"
-#include "netsph/solver/runner.hpp"
+#include "netsph/run/output_particles.hpp"
+#include "netsph/run/runner.hpp"
 #include "netsph/sph/kernels.hpp"
 #include "netsph/sph/shepard.hpp"
 #include "state_difference.hpp"

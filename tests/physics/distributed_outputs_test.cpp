@@ -23,7 +23,7 @@
 #include "netsph/distributed/distributed_stepper.hpp"
 #include "netsph/distributed/scene_parts.hpp"
 #include "netsph/io/checkpoint_file.hpp"
-#include "netsph/solver/runner.hpp"
+#include "netsph/run/runner.hpp"
 #include "thread_processes.hpp"
 
 namespace netsph {

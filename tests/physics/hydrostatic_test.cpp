@@ -7,7 +7,7 @@
 #include <map>
 
 #include "case_runs.hpp"
-#include "netsph/solver/run_outputs.hpp"
+#include "netsph/run/run_outputs.hpp"
 
 namespace netsph {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "case_runs.hpp"
 #include "netsph/io/checkpoint_file.hpp"
-#include "netsph/solver/runner.hpp"
+#include "netsph/run/runner.hpp"
 
 namespace netsph {
 namespace {

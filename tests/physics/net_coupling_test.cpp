@@ -18,7 +18,7 @@
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/net/current_loads.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
-#include "netsph/solver/runner.hpp"
+#include "netsph/run/runner.hpp"
 
 namespace netsph {
 namespace {

@@ -1,4 +1,4 @@
-// output.snapshot_region (solver/run_outputs.cpp): a snapshot holds exactly the particles that
+// output.snapshot_region (run/run_outputs.cpp): a snapshot holds exactly the particles that
 // are inside the box when it is written, with their own fields; without a region, all of them.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 
 #include "case_runs.hpp"
 #include "hdf5_read.hpp"
-#include "netsph/solver/run_outputs.hpp"
+#include "netsph/run/run_outputs.hpp"
 
 namespace netsph {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "netsph/case/case_reader.hpp"
-#include "netsph/net/standalone_net_run.hpp"
+#include "netsph/run/standalone_net_run.hpp"
 
 namespace netsph {
 namespace {

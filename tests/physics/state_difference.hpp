@@ -116,7 +116,7 @@ inline void expect_parity(const Difference& d) {
 
 // Two runs that must agree to the bit: a run split over processes against the same run on
 // one. The split run sums every particle's pairs over the same neighbours in the same order
-// (the cell grid orders particles by position, neighbors/cell_grid.cpp; every process sorts
+// (the cell grid orders particles by position, neighbours/cell_grid.cpp; every process sorts
 // again when one must) with the same instructions, and reduces dt's inputs with max, which
 // does not round; so nothing in it rounds otherwise, on any CPU and instruction set. Not for
 // cases with bodies or nets: their loads are double sums over the processes, in another

@@ -10,7 +10,7 @@
 
 #include "netsph/case/builtin_cases.hpp"
 #include "netsph/case/case_reader.hpp"
-#include "netsph/solver/runner.hpp"
+#include "netsph/run/runner.hpp"
 #include "netsph/validation/validation.hpp"
 
 namespace netsph {

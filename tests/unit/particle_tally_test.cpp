@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "netsph/backend/device/host_exec.hpp"
-#include "netsph/solver/output_particles.hpp"
+#include "netsph/run/output_particles.hpp"
 #include "netsph/sph/particle_tally.hpp"
 
 namespace netsph {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "netsph/core/error.hpp"
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 
 namespace netsph {
 namespace {

@@ -11,8 +11,8 @@
 
 #include "netsph/case/case_reader.hpp"
 #include "netsph/geometry/box_lattice.hpp"
+#include "netsph/setup/scene.hpp"
 #include "netsph/solver/net_coupling.hpp"
-#include "netsph/solver/scene.hpp"
 #include "scene_cases.hpp"
 
 namespace netsph {

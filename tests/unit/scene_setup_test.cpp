@@ -1,4 +1,4 @@
-// The set-up of a case's particles (solver/scene.cpp, solver/scene_bodies.cpp): the fluid
+// The set-up of a case's particles (setup/scene.cpp, setup/scene_bodies.cpp): the fluid
 // removed where fills overlap and inside bodies, against brute force, and the spatial bins
 // (geometry/box_bins.hpp) that keep the body test from being O(particles x bodies).
 #include <gtest/gtest.h>
@@ -18,10 +18,10 @@
 #include "netsph/geometry/box_bins.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/geometry/shapes.hpp"
-#include "netsph/solver/mach_check.hpp"
-#include "netsph/solver/memory_preflight.hpp"
+#include "netsph/setup/mach_check.hpp"
+#include "netsph/setup/memory_preflight.hpp"
+#include "netsph/setup/scene.hpp"
 #include "netsph/solver/net_coupling.hpp"
-#include "netsph/solver/scene.hpp"
 #include "scene_cases.hpp"
 
 namespace netsph {

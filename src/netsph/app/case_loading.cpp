@@ -13,7 +13,7 @@
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/distributed/memory_share.hpp"
-#include "netsph/solver/memory_preflight.hpp"
+#include "netsph/setup/memory_preflight.hpp"
 #if defined(NETSPH_HAVE_CUDA)
 #include "netsph/backend/cuda/cuda_runtime_info.hpp"
 #endif

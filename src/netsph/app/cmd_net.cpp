@@ -11,7 +11,7 @@
 #include "netsph/io/output_folder.hpp"
 #include "netsph/net/knot_spring_solver.hpp"
 #include "netsph/net/net_generator.hpp"
-#include "netsph/net/net_output.hpp"
+#include "netsph/run/net_output.hpp"
 
 namespace netsph::app {
 
@@ -45,13 +45,12 @@ int net_command(const NetArgs& args) {
     fmt::print("  mesh grouping      lambda = {:.4g}: numerical twine {:.4g} mm x {:.4g} mm\n",
                ns.mesh_grouping, l * 1e3, d * 1e3);
     fmt::print("  knots              {} ({} x {}, {} layout), {} anchored\n", net.knots.size(),
-               net.columns, net.rows, ns.layout == KnotLayout::Crossings ? "crossings" : "inset",
-               anchored);
+               net.columns, net.rows, name_of(ns.layout), anchored);
     fmt::print("  twines             {}, rest length {:.4g} x {:.4g} mm\n", net.twines.size(),
                net.spacing_across * 1e3, net.spacing_up * 1e3);
     fmt::print("  equivalent knot    {} (rule \"{}\"): element A = {:.4g} mm^2, V = {:.4g} mm^3\n",
-               knot_shape_name(ns.knot_shape), equivalent_knot_rule_name(ns.equivalent_knot),
-               net.element.area * 1e6, net.element.volume * 1e9);
+               name_of(ns.knot_shape), name_of(ns.equivalent_knot), net.element.area * 1e6,
+               net.element.volume * 1e9);
     if (ns.knot_shape == KnotShape::Sphere) {
       fmt::print("                     diameter {:.4g} mm\n", net.knot.size * 1e3);
     } else {

@@ -23,8 +23,8 @@
 #include "netsph/distributed/scene_parts.hpp"
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/io/output_folder.hpp"
-#include "netsph/net/standalone_net_run.hpp"
-#include "netsph/solver/runner.hpp"
+#include "netsph/run/runner.hpp"
+#include "netsph/run/standalone_net_run.hpp"
 
 namespace netsph::app {
 namespace {

@@ -91,7 +91,7 @@ int apply_threads(int threads);
 std::string resolve_backend(const std::string& requested, bool distributed = false);
 /// The Simulation backend of a resolved name.
 StepBackend step_backend(const std::string& resolved);
-/// Refuses a case whose particles (estimated from its boxes, solver/memory_preflight.hpp)
+/// Refuses a case whose particles (estimated from its boxes, setup/memory_preflight.hpp)
 /// cannot fit the memory available to one process, naming both; warns when it is close. With
 /// `coll` (a distributed run; collective) each process's share, summed over the processes of
 /// each machine (distributed/memory_share.hpp).

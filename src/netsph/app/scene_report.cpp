@@ -9,7 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "netsph/io/snapshot_writer.hpp"
-#include "netsph/solver/run_outputs.hpp"
+#include "netsph/run/run_outputs.hpp"
 
 namespace netsph::app {
 
@@ -21,7 +21,7 @@ void log_scene(const Simulation& sim, OutputParticles& particles, double setup_s
   const std::uint64_t total = particles.count(ParticleSelection::All);
   spdlog::info("{}D, dp = {:g} m, h = {:g} m ({} kernel), c0 = {:.4g} m/s, rho0 = {:g} kg/m^3",
                m.dims, spec.simulation.dp, static_cast<double>(m.kernel.h),
-               m.kernel_type == KernelType::Wendland ? "Wendland" : "cubic spline", s.sound_speed,
+               name_of(kKernelTypeLabels, m.kernel_type), s.sound_speed,
                static_cast<double>(m.eos.rho0));
   spdlog::info("particles: {} fluid, {} wall, {} body, {} open-boundary buffer, {} total{}",
                counts.fluid, counts.walls, total - counts.fluid - counts.walls - counts.buffer,
@@ -49,10 +49,7 @@ void log_scene(const Simulation& sim, OutputParticles& particles, double setup_s
     if (knot[k]) continue;
     const RigidBody& b = s.bodies[k];
     spdlog::info("  body {:<12} {:>9} particles, {} , mass {:.4g} kg{}", b.name, b.count,
-                 b.motion == BodyMotion::Fixed
-                     ? "fixed"
-                     : (b.motion == BodyMotion::Floating ? "floating" : "prescribed"),
-                 b.inertia.mass, unit);
+                 name_of(b.motion), b.inertia.mass, unit);
   }
   // The bodies' sources are listed above.
   std::unordered_set<std::string> bodies;

@@ -3,7 +3,7 @@
 // domain and memory. Shared by `run` (logged) and `check` (printed).
 #include <string>
 
-#include "netsph/solver/output_particles.hpp"
+#include "netsph/run/output_particles.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {

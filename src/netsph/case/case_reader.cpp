@@ -29,18 +29,6 @@ const std::vector<std::string_view> kDiffusionKeys = {"model", "delta"};
 const std::vector<std::string_view> kShiftingKeys = {"model", "coefficient", "surface_threshold"};
 const std::vector<std::string_view> kHistoryKeys = {"times", "velocities"};
 
-constexpr std::array kKernels = {Choice<KernelType>{"wendland", KernelType::Wendland},
-                                 Choice<KernelType>{"cubic_spline", KernelType::CubicSpline}};
-constexpr std::array kViscosityModels = {
-    Choice<ViscosityModel>{"artificial", ViscosityModel::Artificial},
-    Choice<ViscosityModel>{"laminar", ViscosityModel::Laminar}};
-constexpr std::array kDiffusionModels = {
-    Choice<DensityDiffusion>{"none", DensityDiffusion::None},
-    Choice<DensityDiffusion>{"molteni", DensityDiffusion::Molteni},
-    Choice<DensityDiffusion>{"fourtakas", DensityDiffusion::Fourtakas}};
-constexpr std::array kShiftingModels = {Choice<ShiftingModel>{"none", ShiftingModel::None},
-                                        Choice<ShiftingModel>{"fickian", ShiftingModel::Fickian}};
-
 }  // namespace
 
 // ---- the reader ---------------------------------------------------------------------------
@@ -183,7 +171,7 @@ void CaseReader::read_simulation(const std::string& default_name) {
   s.dimensions = static_cast<int>(r.integer("dimensions", IntRule{2, 3}, 3));
   s.dp = r.number("dp", NumberRule::positive("m"), 0.0);  // required unless net-only: require_dp
   s.h_over_dp = r.number("h_over_dp", NumberRule::closed(1, 3, ""), s.h_over_dp);
-  s.kernel = r.choice("kernel", kKernels, s.kernel);
+  s.kernel = r.choice("kernel", kKernelTypeNames, s.kernel);
   s.end_time = r.required_number("end_time", NumberRule::positive("s"), "simulated time, s, > 0");
   s.cfl = r.number("cfl", NumberRule::left_open(0, 1, ""), s.cfl);
   s.dt_min = r.number("dt_min", NumberRule::non_negative("s"), s.dt_min);
@@ -258,7 +246,7 @@ void CaseReader::read_viscosity(const TomlTableReader& fluid) {
   if (!node) return;
   FluidSpec& f = spec_.fluid;
   if (node->is_string()) {  // bare model name: default parameters
-    f.viscosity = fluid.to_choice("viscosity", *node, kViscosityModels);
+    f.viscosity = fluid.to_choice("viscosity", *node, kViscosityModelNames);
     return;
   }
   const toml::table& table =
@@ -266,13 +254,15 @@ void CaseReader::read_viscosity(const TomlTableReader& fluid) {
                          "must be \"artificial\", \"laminar\" or a table such as { model = "
                          "\"laminar\", kinematic_viscosity = 1e-6 }");
   TomlTableReader r(table, "fluid.viscosity", "fluid.viscosity", kViscosityKeys, source_);
-  f.viscosity = r.choice("model", kViscosityModels, f.viscosity);
+  f.viscosity = r.choice("model", kViscosityModelNames, f.viscosity);
   if (f.viscosity == ViscosityModel::Laminar) {
-    reject_foreign_parameter(r, "alpha", "laminar", "\"artificial\"", "model, kinematic_viscosity");
+    reject_foreign_parameter(r, "alpha", name_of(f.viscosity), "\"artificial\"",
+                             "model, kinematic_viscosity");
     f.kinematic_viscosity = r.number("kinematic_viscosity", NumberRule::left_open(0, 1, "m^2/s"),
                                      f.kinematic_viscosity);
   } else {
-    reject_foreign_parameter(r, "kinematic_viscosity", "artificial", "\"laminar\"", "model, alpha");
+    reject_foreign_parameter(r, "kinematic_viscosity", name_of(f.viscosity), "\"laminar\"",
+                             "model, alpha");
     f.alpha = r.number("alpha", NumberRule::closed(0, 1, ""), f.alpha);
   }
 }
@@ -282,7 +272,7 @@ void CaseReader::read_density_diffusion(const TomlTableReader& fluid) {
   if (!node) return;
   FluidSpec& f = spec_.fluid;
   if (node->is_string()) {
-    f.density_diffusion = fluid.to_choice("density_diffusion", *node, kDiffusionModels);
+    f.density_diffusion = fluid.to_choice("density_diffusion", *node, kDensityDiffusionNames);
     return;
   }
   const toml::table& table =
@@ -291,9 +281,10 @@ void CaseReader::read_density_diffusion(const TomlTableReader& fluid) {
                          "= \"molteni\", delta = 0.1 }");
   TomlTableReader r(table, "fluid.density_diffusion", "fluid.density_diffusion", kDiffusionKeys,
                     source_);
-  f.density_diffusion = r.choice("model", kDiffusionModels, f.density_diffusion);
+  f.density_diffusion = r.choice("model", kDensityDiffusionNames, f.density_diffusion);
   if (f.density_diffusion == DensityDiffusion::None) {
-    reject_foreign_parameter(r, "delta", "none", "\"molteni\" and \"fourtakas\"", "model");
+    reject_foreign_parameter(r, "delta", name_of(f.density_diffusion),
+                             "\"molteni\" and \"fourtakas\"", "model");
   } else {
     f.delta = r.number("delta", NumberRule::closed(0, 1, ""), f.delta);
   }
@@ -305,7 +296,7 @@ void CaseReader::read_shifting(const TomlTableReader& fluid) {
   shifting_given_ = true;
   FluidSpec& f = spec_.fluid;
   if (node->is_string()) {
-    f.shifting = fluid.to_choice("shifting", *node, kShiftingModels);
+    f.shifting = fluid.to_choice("shifting", *node, kShiftingModelNames);
     return;
   }
   const toml::table& table = fluid.nested_table("shifting", *node,
@@ -313,10 +304,10 @@ void CaseReader::read_shifting(const TomlTableReader& fluid) {
                                                 "{ model = \"fickian\", coefficient = 2.0 }");
   TomlTableReader r(table, "fluid.shifting", "fluid.shifting", kShiftingKeys, source_);
   // Parameters only exist for "fickian", so a table without a model means it.
-  f.shifting = r.choice("model", kShiftingModels, ShiftingModel::Fickian);
+  f.shifting = r.choice("model", kShiftingModelNames, ShiftingModel::Fickian);
   if (f.shifting == ShiftingModel::None) {
     for (const std::string_view key : {"coefficient", "surface_threshold"}) {
-      reject_foreign_parameter(r, key, "none", "\"fickian\"", "model");
+      reject_foreign_parameter(r, key, name_of(f.shifting), "\"fickian\"", "model");
     }
   } else {
     f.shifting_coefficient =

@@ -19,6 +19,15 @@ const std::vector<std::string_view> kRotationKeys = {"axis", "angle"};
 
 /// The shapes as the case names them; several map to one BodyShape.
 enum class ShapeKind { Box, Plate, SquarePlate, CircularPlate, Cylinder, Sphere, Cruciform };
+constexpr std::array kShapeKindNames = {
+    EnumName<ShapeKind>{"box", ShapeKind::Box},
+    EnumName<ShapeKind>{"plate", ShapeKind::Plate},
+    EnumName<ShapeKind>{"square_plate", ShapeKind::SquarePlate},
+    EnumName<ShapeKind>{"circular_plate", ShapeKind::CircularPlate},
+    EnumName<ShapeKind>{"cylinder", ShapeKind::Cylinder},
+    EnumName<ShapeKind>{"sphere", ShapeKind::Sphere},
+    EnumName<ShapeKind>{"cruciform", ShapeKind::Cruciform}};
+static_assert(one_to_one(kShapeKindNames));
 /// Which key orients the shape's local x axis.
 enum class Orientation { None, Normal, Axis };
 
@@ -29,39 +38,31 @@ struct ShapeParameter {
 
 struct ShapeInfo {
   ShapeKind kind;
-  std::string_view name;
   std::vector<ShapeParameter> parameters;
   Orientation orientation;
+  std::string_view name() const { return name_of(kShapeKindNames, kind); }
 };
 
 const std::vector<ShapeInfo>& shapes() {
   static const std::vector<ShapeInfo> list = {
-      {ShapeKind::Box,
-       "box",
-       {{"size", "lengths [lx, ly, lz] along the local axes"}},
-       Orientation::None},
+      {ShapeKind::Box, {{"size", "lengths [lx, ly, lz] along the local axes"}}, Orientation::None},
       {ShapeKind::Plate,
-       "plate",
        {{"thickness", "plate thickness along the normal (local x)"},
         {"width", "plate width along local y"},
         {"height", "plate height along local z"}},
        Orientation::Normal},
       {ShapeKind::SquarePlate,
-       "square_plate",
        {{"side", "edge length of the square face"},
         {"thickness", "plate thickness along the normal (local x)"}},
        Orientation::Normal},
       {ShapeKind::CircularPlate,
-       "circular_plate",
        {{"diameter", "disc diameter"}, {"thickness", "disc thickness along the normal (local x)"}},
        Orientation::Normal},
       {ShapeKind::Cylinder,
-       "cylinder",
        {{"diameter", "cylinder diameter"}, {"length", "cylinder length along its axis (local x)"}},
        Orientation::Axis},
-      {ShapeKind::Sphere, "sphere", {{"diameter", "sphere diameter"}}, Orientation::None},
+      {ShapeKind::Sphere, {{"diameter", "sphere diameter"}}, Orientation::None},
       {ShapeKind::Cruciform,
-       "cruciform",
        {{"twine_length", "length of each of the two crossing twines"},
         {"twine_diameter", "twine diameter, < twine_length"}},
        Orientation::Normal},
@@ -82,10 +83,8 @@ const ShapeInfo& shape_info(ShapeKind kind) {
 }
 
 const ShapeInfo& shape_info(std::string_view name) {
-  for (const ShapeInfo& s : shapes()) {
-    if (s.name == name) return s;
-  }
-  return shapes().front();  // unreachable: the name was checked against the list
+  // The name was checked against the list.
+  return shape_info(value_of(kShapeKindNames, name).value_or(ShapeKind::Box));
 }
 
 bool has_parameter(const ShapeInfo& s, std::string_view key) {
@@ -104,7 +103,7 @@ std::string parameter_list(const ShapeInfo& s) {
 std::string owners_of(std::string_view key) {
   std::vector<std::string> owners;
   for (const ShapeInfo& s : shapes()) {
-    if (has_parameter(s, key)) owners.push_back(toml_quote(s.name));
+    if (has_parameter(s, key)) owners.push_back(toml_quote(s.name()));
   }
   std::string out;
   for (std::size_t i = 0; i < owners.size(); ++i) {
@@ -112,22 +111,6 @@ std::string owners_of(std::string_view key) {
     out += owners[i];
   }
   return out;
-}
-
-constexpr std::array kMotions = {Choice<BodyMotion>{"fixed", BodyMotion::Fixed},
-                                 Choice<BodyMotion>{"floating", BodyMotion::Floating},
-                                 Choice<BodyMotion>{"prescribed", BodyMotion::Prescribed}};
-constexpr std::array kBodyModels = {Choice<WallModel>{"dbc", WallModel::Dbc},
-                                    Choice<WallModel>{"mdbc", WallModel::Mdbc}};
-constexpr std::array kBodySlips = {Choice<WallSlip>{"wall_velocity", WallSlip::WallVelocity},
-                                   Choice<WallSlip>{"no_slip", WallSlip::NoSlip},
-                                   Choice<WallSlip>{"free_slip", WallSlip::FreeSlip}};
-
-std::string_view motion_name(BodyMotion m) {
-  for (const auto& c : kMotions) {
-    if (c.value == m) return c.name;
-  }
-  return "fixed";
 }
 
 /// Keys that belong to one motion only.
@@ -248,20 +231,13 @@ void CaseReader::register_body_name(const toml::table& table, const BodySpec& bo
 // ---- shape --------------------------------------------------------------------------------
 
 void CaseReader::read_body_shape(const TomlTableReader& r, BodySpec& body) const {
-  std::vector<std::string_view> names;
-  for (const ShapeInfo& s : shapes()) names.push_back(s.name);
-  const toml::node& node = r.require("shape", "the body's solid: " + join(names, ", "));
-  constexpr std::array kShapeChoices = {
-      Choice<ShapeKind>{"box", ShapeKind::Box},
-      Choice<ShapeKind>{"plate", ShapeKind::Plate},
-      Choice<ShapeKind>{"square_plate", ShapeKind::SquarePlate},
-      Choice<ShapeKind>{"circular_plate", ShapeKind::CircularPlate},
-      Choice<ShapeKind>{"cylinder", ShapeKind::Cylinder},
-      Choice<ShapeKind>{"sphere", ShapeKind::Sphere},
-      Choice<ShapeKind>{"cruciform", ShapeKind::Cruciform}};
-  const ShapeKind kind = r.to_choice("shape", node, kShapeChoices);
+  constexpr auto kNames = names_of(kShapeKindNames);
+  const toml::node& node = r.require(
+      "shape", "the body's solid: " +
+                   join(std::vector<std::string_view>(kNames.begin(), kNames.end()), ", "));
+  const ShapeKind kind = r.to_choice("shape", node, kShapeKindNames);
   const ShapeInfo& info = shape_info(kind);
-  body.shape_name = std::string(info.name);
+  body.shape_name = std::string(info.name());
 
   // A parameter of another shape would otherwise be silently ignored.
   for (const std::string_view key : kShapeKeys) {
@@ -270,16 +246,16 @@ void CaseReader::read_body_shape(const TomlTableReader& r, BodySpec& body) const
     r.fail_value(key, *foreign,
                  fmt::format("is not a parameter of shape \"{}\" ({} is a parameter of {}); "
                              "shape \"{}\" takes {}",
-                             info.name, key, owners_of(key), info.name, parameter_list(info)));
+                             info.name(), key, owners_of(key), info.name(), parameter_list(info)));
   }
   const auto length = [&](std::string_view key) {
     std::string_view meaning;
     for (const ShapeParameter& p : info.parameters) {
       if (p.key == key) meaning = p.meaning;
     }
-    return r.required_number(
-        key, NumberRule::positive("m"),
-        fmt::format("{}, m, > 0; shape \"{}\" takes {}", meaning, info.name, parameter_list(info)));
+    return r.required_number(key, NumberRule::positive("m"),
+                             fmt::format("{}, m, > 0; shape \"{}\" takes {}", meaning, info.name(),
+                                         parameter_list(info)));
   };
   switch (kind) {
     case ShapeKind::Box:
@@ -359,22 +335,22 @@ Quat CaseReader::read_body_orientation(const TomlTableReader& r, const BodySpec&
                  info.orientation == Orientation::Axis
                      ? fmt::format("does not apply to shape \"{}\": give its axis = [x, y, z] "
                                    "instead (the direction of the cylinder's axis)",
-                                   info.name)
+                                   info.name())
                      : fmt::format("does not apply to shape \"{}\" (normal orients plates, "
                                    "circular plates and cruciforms); turn a {} with "
                                    "rotation = {{ axis = [x, y, z], angle = <degrees> }}",
-                                   info.name, info.name));
+                                   info.name(), info.name()));
   }
   if (const toml::node* axis = r.find("axis"); axis && info.orientation != Orientation::Axis) {
     r.fail_value("axis", *axis,
                  info.orientation == Orientation::Normal
                      ? fmt::format("does not apply to shape \"{}\": give its normal = [x, y, z] "
                                    "instead (the direction of the local x axis)",
-                                   info.name)
+                                   info.name())
                      : fmt::format("does not apply to shape \"{}\" (axis orients cylinders); "
                                    "turn a {} with rotation = {{ axis = [x, y, z], angle = "
                                    "<degrees> }}",
-                                   info.name, info.name));
+                                   info.name(), info.name()));
   }
   Quat q{};
   if (info.orientation == Orientation::Normal) {
@@ -428,16 +404,16 @@ Quat CaseReader::read_rotation(const TomlTableReader& r) const {
 // ---- motion -------------------------------------------------------------------------------
 
 void CaseReader::read_body_motion(const TomlTableReader& r, BodySpec& body) const {
-  body.motion = r.choice("motion", kMotions, body.motion);
-  const std::string_view motion = motion_name(body.motion);
+  body.motion = r.choice("motion", kBodyMotionNames, body.motion);
+  const std::string_view motion = name_of(body.motion);
   for (const MotionKey& k : kMotionKeys) {
     const toml::node* node = r.find(k.key);
     if (!node || k.owner == body.motion) continue;
     r.fail_value(k.key, *node,
                  fmt::format("applies to motion = \"{}\" only, but this body's motion is \"{}\"{}; "
                              "set motion = \"{}\" or remove {}",
-                             motion_name(k.owner), motion, r.has("motion") ? "" : " (the default)",
-                             motion_name(k.owner), k.key));
+                             name_of(k.owner), motion, r.has("motion") ? "" : " (the default)",
+                             name_of(k.owner), k.key));
   }
   const std::string_view mass_unit = is_2d() ? "kg/m" : "kg";
   if (body.motion == BodyMotion::Floating) {
@@ -477,13 +453,13 @@ void CaseReader::read_body_motion(const TomlTableReader& r, BodySpec& body) cons
 // ---- boundary model and Cd reference --------------------------------------------------------
 
 void CaseReader::read_body_boundary(const TomlTableReader& r, BodySpec& body) const {
-  body.model = r.choice("model", kBodyModels, body.model);
+  body.model = r.choice("model", kWallModelNames, body.model);
   if (const toml::node* slip = r.find("slip"); slip && body.model == WallModel::Dbc) {
     r.fail_value("slip", *slip,
                  "slip applies to mdbc bodies only (dbc body particles always carry the body's "
                  "own velocity); remove slip or set model = \"mdbc\"");
   }
-  body.slip = r.choice("slip", kBodySlips, body.slip);
+  body.slip = r.choice("slip", kWallSlipNames, body.slip);
   const toml::node* layers = r.find("layers");
   if (!layers) return;
   constexpr std::string_view kAllowed =

@@ -16,18 +16,17 @@ namespace {
 
 const std::vector<std::string_view> kProfileKeys = {"z", "u"};
 
-constexpr std::array kWallModels = {Choice<WallModel>{"dbc", WallModel::Dbc},
-                                    Choice<WallModel>{"mdbc", WallModel::Mdbc}};
-constexpr std::array kWallSlips = {Choice<WallSlip>{"no_slip", WallSlip::NoSlip},
-                                   Choice<WallSlip>{"free_slip", WallSlip::FreeSlip},
-                                   Choice<WallSlip>{"wall_velocity", WallSlip::WallVelocity}};
-constexpr std::array kOpenFaces = {Choice<Face>{"xmin", kXMin}, Choice<Face>{"xmax", kXMax},
-                                   Choice<Face>{"ymin", kYMin}, Choice<Face>{"ymax", kYMax},
-                                   Choice<Face>{"zmin", kZMin}, Choice<Face>{"zmax", kZMax}};
-constexpr std::array kBufferDensities = {
-    Choice<BufferDensity>{"extrapolated", BufferDensity::Extrapolated},
-    Choice<BufferDensity>{"hydrostatic", BufferDensity::Hydrostatic},
-    Choice<BufferDensity>{"reference", BufferDensity::Reference}};
+/// A wall's slip words, its default (no_slip) first.
+constexpr auto kWallSlips =
+    reordered(kWallSlipNames, {WallSlip::NoSlip, WallSlip::FreeSlip, WallSlip::WallVelocity});
+/// The faces a wall can have in 2D, in kFaceNames' order.
+constexpr std::array<std::string_view, 4> kFaceNames2D = {name_of(kXMin), name_of(kXMax),
+                                                          name_of(kZMin), name_of(kZMax)};
+
+/// The name of face number `face` (0..5, kFaceNames' order).
+std::string_view face_name(std::size_t face) {
+  return name_of(static_cast<Face>(face));
+}
 
 }  // namespace
 
@@ -70,7 +69,7 @@ WallSpec CaseReader::read_wall(const toml::table& table, int number) const {
   wall.faces = read_faces(r);
   // Default: enough layers to cover the kernel support 2h (3 at h = 1.5 dp).
   wall.layers = static_cast<int>(r.integer("layers", IntRule{1, 10}, support_layers()));
-  wall.model = r.choice("model", kWallModels, wall.model);
+  wall.model = r.choice("model", kWallModelNames, wall.model);
   if (const toml::node* slip = r.find("slip"); slip && wall.model == WallModel::Dbc) {
     r.fail_value("slip", *slip,
                  "slip applies to mdbc walls only (dbc wall particles always carry the wall's "
@@ -123,19 +122,21 @@ void CaseReader::check_wall_seamless(const TomlTableReader& r, const WallSpec& w
 
 std::array<bool, 6> CaseReader::read_faces(const TomlTableReader& r) const {
   std::array<bool, 6> faces{};
+  constexpr auto kAll = names_of(kFaceNames);
   const std::vector<std::string_view> allowed =
-      is_2d() ? std::vector<std::string_view>{"xmin", "xmax", "zmin", "zmax"}
-              : std::vector<std::string_view>(kFaceNames.begin(), kFaceNames.end());
+      is_2d() ? std::vector<std::string_view>(kFaceNames2D.begin(), kFaceNames2D.end())
+              : std::vector<std::string_view>(kAll.begin(), kAll.end());
   const toml::node* node = r.find("faces");
   if (!node) {
     for (const std::string_view face : allowed) {
-      faces[std::find(kFaceNames.begin(), kFaceNames.end(), face) - kFaceNames.begin()] = true;
+      faces[static_cast<std::size_t>(*value_of(kFaceNames, face))] = true;
     }
     return faces;
   }
+  // to_word_list() returns indices into `known`: kFaceNames is in face order, so they are faces.
   const WordListRule rule{
       .noun = "face",
-      .known = std::vector<std::string_view>(kFaceNames.begin(), kFaceNames.end()),
+      .known = std::vector<std::string_view>(kAll.begin(), kAll.end()),
       .allowed = allowed,
       .not_allowed_reason = kNotIn2D,
       .example = "[\"xmin\", \"xmax\", \"zmin\"]",
@@ -191,7 +192,7 @@ OpenBoundarySpec CaseReader::read_open_boundary(const toml::table& table, bool i
   check_buffer(r, ob);
   check_buffer_clear_of_walls(r, ob, kind);
   read_open_velocity(r, inlet, ob);
-  ob.density = r.choice("density", kBufferDensities, ob.density);
+  ob.density = r.choice("density", kBufferDensityNames, ob.density);
   if (ob.density == BufferDensity::Hydrostatic && spec_.fluid.gravity.z == 0) {
     r.fail_value("density", *r.find("density"),
                  fmt::format("needs gravity along z for the hydrostatic pressure, but "
@@ -205,11 +206,11 @@ OpenBoundarySpec CaseReader::read_open_boundary(const toml::table& table, bool i
 Face CaseReader::read_open_face(const TomlTableReader& r, std::string_view kind) const {
   const toml::node& node =
       r.require("face", "the face of [domain] it lies on: xmin, xmax, ymin, ymax, zmin or zmax");
-  const Face face = r.to_choice("face", node, kOpenFaces);
+  const Face face = r.to_choice("face", node, kFaceNames);
   if (is_2d() && (face == kYMin || face == kYMax)) {
     r.fail_value("face", node,
                  fmt::format("face \"{}\" is not allowed {}; allowed: xmin, xmax, zmin, zmax",
-                             kFaceNames[face], kNotIn2D));
+                             name_of(face), kNotIn2D));
   }
   if (!spec_.domain.given) {
     r.fail_value(
@@ -236,8 +237,8 @@ void CaseReader::check_periodic_open_faces() const {
                             "has no open boundary: the fluid would wrap through it into the "
                             "buffer. Put an [[inlet]] or [[outlet]] on \"{}\" too (as the "
                             "paper's flumes do), or take {} out of domain.periodic",
-                            here->label, kFaceNames[face], "xyz"[axis], kFaceNames[face ^ 1],
-                            kFaceNames[face ^ 1], "xyz"[axis]));
+                            here->label, face_name(face), "xyz"[axis], face_name(face ^ 1),
+                            face_name(face ^ 1), "xyz"[axis]));
   }
 }
 
@@ -248,7 +249,7 @@ void CaseReader::check_face_free(const TomlTableReader& r, const OpenBoundarySpe
     r.fail_value("face", *r.find("face"),
                  fmt::format("face \"{}\" already has an open boundary, {} ({}); a face takes at "
                              "most one [[inlet]] or [[outlet]]",
-                             kFaceNames[ob.face], slot->label, slot->where.str()));
+                             name_of(ob.face), slot->label, slot->where.str()));
   }
   slot = NamedEntry{ob.name, label, ob.where};
 }
@@ -288,9 +289,9 @@ void CaseReader::check_buffer_clear_of_walls(const TomlTableReader& r, const Ope
         fmt::format("wall \"{}\" ({}) has face \"{}\" at {} = {} m: its particle layers ({} .. {} "
                     "m) would lie across this {}'s buffer ({} .. {} m) and close it; remove \"{}\" "
                     "from that wall's faces (without a faces key a wall has all of them)",
-                    wall.name, wall.where.str(), kFaceNames[ob.face], "xyz"[axis],
+                    wall.name, wall.where.str(), name_of(ob.face), "xyz"[axis],
                     format_number(plane), format_derived(lo), format_derived(hi), kind,
-                    format_derived(buffer_lo), format_derived(buffer_hi), kFaceNames[ob.face]));
+                    format_derived(buffer_lo), format_derived(buffer_hi), name_of(ob.face)));
   }
 }
 
@@ -374,7 +375,7 @@ void CaseReader::read_profile(const TomlTableReader& r, OpenBoundarySpec& ob) co
         "profile", node,
         fmt::format("a profile over z needs a vertical face ({}), not \"{}\"; give a "
                     "uniform velocity on a horizontal face",
-                    is_2d() ? "xmin or xmax" : "xmin, xmax, ymin or ymax", kFaceNames[ob.face]));
+                    is_2d() ? "xmin or xmax" : "xmin, xmax, ymin or ymax", name_of(ob.face)));
   }
   const std::string path = r.key_path("profile");
   TomlTableReader p(table, path, path, kProfileKeys, source_);

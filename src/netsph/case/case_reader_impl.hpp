@@ -49,8 +49,6 @@ std::string format_derived(double v);
 /// digits, '_', '-' and '.', not "." or "..".
 bool plain_file_name(const std::string& name);
 
-inline constexpr std::array<std::string_view, 6> kFaceNames = {"xmin", "xmax", "ymin",
-                                                               "ymax", "zmin", "zmax"};
 inline constexpr std::string_view kPlaneReason = "2D runs in the x-z plane (z up)";
 /// Why y faces and the y axis are rejected in 2D (completes "... is not allowed ").
 inline constexpr std::string_view kNotIn2D = "in 2D because 2D runs in the x-z plane (z up)";

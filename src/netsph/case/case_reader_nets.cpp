@@ -16,25 +16,6 @@ const std::vector<std::string_view> kSinkerKeys = {"length", "diameter", "densit
                                                    "drag_coefficient"};
 const std::vector<std::string_view> kPointLoadKeys = {"row", "column", "force"};
 
-constexpr std::array kKnotShapes = {Choice<KnotShape>{"square_plate", KnotShape::SquarePlate},
-                                    Choice<KnotShape>{"circular_plate", KnotShape::CircularPlate},
-                                    Choice<KnotShape>{"sphere", KnotShape::Sphere}};
-constexpr std::array kKnotRules = {
-    Choice<EquivalentKnotRule>{"exact", EquivalentKnotRule::Exact},
-    Choice<EquivalentKnotRule>{"full_volume", EquivalentKnotRule::FullVolume},
-    Choice<EquivalentKnotRule>{"full", EquivalentKnotRule::Full}};
-constexpr std::array kLayouts = {Choice<KnotLayout>{"crossings", KnotLayout::Crossings},
-                                 Choice<KnotLayout>{"inset", KnotLayout::Inset}};
-constexpr std::array kEdges = {Choice<EdgeKnots>{"full", EdgeKnots::Full},
-                               Choice<EdgeKnots>{"solidity-matched", EdgeKnots::SolidityMatched}};
-constexpr std::array kLoadModels = {Choice<NetLoadModel>{"screen", NetLoadModel::Screen},
-                                    Choice<NetLoadModel>{"morison", NetLoadModel::Morison},
-                                    Choice<NetLoadModel>{"none", NetLoadModel::None}};
-constexpr std::array kScreens = {
-    Choice<ScreenCoefficients>{"S3", ScreenCoefficients::S3KristiansenFaltinsen},
-    Choice<ScreenCoefficients>{"S1", ScreenCoefficients::S1Aarsnes},
-    Choice<ScreenCoefficients>{"S2", ScreenCoefficients::S2Loland}};
-
 /// Twine materials: density, kg/m^3, and a typical Young's modulus of net twine, Pa (for
 /// nets whose stiffness is not known; the deflection of a net in a current hardly depends on
 /// it, the strains being below 1%). "custom" needs material_density and a stiffness.
@@ -114,10 +95,10 @@ NetSpec CaseReader::read_net(const toml::table& table, int number) const {
                                format_derived(twine)));
     }
   }
-  net.knot_shape = r.choice("knot_shape", kKnotShapes, net.knot_shape);
-  net.equivalent_knot = r.choice("equivalent_knot", kKnotRules, net.equivalent_knot);
-  net.layout = r.choice("knot_layout", kLayouts, net.layout);
-  net.edges = r.choice("edges", kEdges, net.edges);
+  net.knot_shape = r.choice("knot_shape", kKnotShapeNames, net.knot_shape);
+  net.equivalent_knot = r.choice("equivalent_knot", kEquivalentKnotRuleNames, net.equivalent_knot);
+  net.layout = r.choice("knot_layout", kKnotLayoutNames, net.layout);
+  net.edges = r.choice("edges", kEdgeKnotsNames, net.edges);
   if (net.edges == EdgeKnots::SolidityMatched && net.layout == KnotLayout::Inset) {
     r.fail_value("edges", *r.find("edges"),
                  "applies to knot_layout = \"crossings\" only: the inset layout's knots are "
@@ -301,18 +282,17 @@ void CaseReader::read_current() {
   c.where = r.location();
   c.velocity =
       r.required_vec3("velocity", NumberRule::any("m/s"), "current velocity [u, v, w], m/s");
-  c.model = r.choice("model", kLoadModels, c.model);
-  c.screen = r.choice("screen", kScreens, c.screen);
+  c.model = r.choice("model", kNetLoadModelNames, c.model);
+  c.screen = r.choice("screen", kScreenCoefficientsNames, c.screen);
   if (c.model != NetLoadModel::Screen) {
-    reject_foreign_parameter(r, "screen", c.model == NetLoadModel::Morison ? "morison" : "none",
-                             "model \"screen\"", "normal_drag, tangential_drag");
+    reject_foreign_parameter(r, "screen", name_of(c.model), "model \"screen\"",
+                             "normal_drag, tangential_drag");
   }
   c.normal_drag = r.number("normal_drag", NumberRule::closed(0, 10, ""), c.normal_drag);
   c.tangential_drag = r.number("tangential_drag", NumberRule::closed(0, 10, ""), c.tangential_drag);
   if (c.model != NetLoadModel::Morison) {
     for (const std::string_view key : {"normal_drag", "tangential_drag"}) {
-      reject_foreign_parameter(r, key, c.model == NetLoadModel::Screen ? "screen" : "none",
-                               "model \"morison\"",
+      reject_foreign_parameter(r, key, name_of(c.model), "model \"morison\"",
                                c.model == NetLoadModel::Screen ? "screen" : "");
     }
   }

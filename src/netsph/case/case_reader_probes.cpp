@@ -1,5 +1,5 @@
 // The [[probe]] tables of a case file: points, lines and planes where the fluid is sampled
-// during a run (solver/probes.hpp). Same conventions as case_reader.cpp; docs/case-reference.md
+// during a run (run/probes.hpp). Same conventions as case_reader.cpp; docs/case-reference.md
 // documents every key.
 #include <cmath>
 
@@ -11,21 +11,15 @@
 namespace netsph::case_detail {
 namespace {
 
-constexpr std::array kProbeTypes = {Choice<ProbeType>{"point", ProbeType::Point},
-                                    Choice<ProbeType>{"line", ProbeType::Line},
-                                    Choice<ProbeType>{"plane", ProbeType::Plane}};
-
 /// Keys that belong to one probe type only: given with another, they would be ignored.
 struct TypeKeys {
   ProbeType type;
-  std::string_view name;
   std::vector<std::string_view> keys;
 };
 const std::vector<TypeKeys>& type_keys() {
-  static const std::vector<TypeKeys> keys = {
-      {ProbeType::Point, "point", {"at"}},
-      {ProbeType::Line, "line", {"start", "end", "points"}},
-      {ProbeType::Plane, "plane", {"min", "max", "spacing"}}};
+  static const std::vector<TypeKeys> keys = {{ProbeType::Point, {"at"}},
+                                             {ProbeType::Line, {"start", "end", "points"}},
+                                             {ProbeType::Plane, {"min", "max", "spacing"}}};
   return keys;
 }
 
@@ -77,16 +71,16 @@ ProbeSpec CaseReader::read_probe(const toml::table& table, int number) const {
                  "probes/<name>.csv)");
   }
   r.require("type", "\"point\", \"line\" or \"plane\"");
-  probe.type = r.choice("type", kProbeTypes, ProbeType::Point);
+  probe.type = r.choice("type", kProbeTypeNames, ProbeType::Point);
   for (const TypeKeys& t : type_keys()) {
     if (t.type == probe.type) continue;
     for (const std::string_view key : t.keys) {
       if (const toml::node* node = r.find(key)) {
-        const std::string_view own = type_keys()[static_cast<int>(probe.type)].name;
+        const std::string_view own = name_of(probe.type);
         r.fail_value(key, *node,
                      fmt::format("does not apply to type = \"{}\" ({} is a key of \"{}\" "
                                  "probes); a \"{}\" probe takes: {}",
-                                 own, key, t.name, own,
+                                 own, key, name_of(t.type), own,
                                  join(type_keys()[static_cast<int>(probe.type)].keys)));
       }
     }

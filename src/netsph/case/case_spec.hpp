@@ -5,8 +5,10 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "netsph/core/enum_names.hpp"
 #include "netsph/core/physics_options.hpp"
 #include "netsph/core/quaternion.hpp"
 #include "netsph/core/vec3.hpp"
@@ -93,6 +95,13 @@ struct FillSpec {
 
 /// Face order used by WallSpec::faces.
 enum Face : int { kXMin = 0, kXMax = 1, kYMin = 2, kYMax = 3, kZMin = 4, kZMax = 5 };
+inline constexpr std::array kFaceNames = {
+    EnumName<Face>{"xmin", kXMin}, EnumName<Face>{"xmax", kXMax}, EnumName<Face>{"ymin", kYMin},
+    EnumName<Face>{"ymax", kYMax}, EnumName<Face>{"zmin", kZMin}, EnumName<Face>{"zmax", kZMax}};
+constexpr std::string_view name_of(Face v) {
+  return name_of(kFaceNames, v);
+}
+static_assert(one_to_one(kFaceNames));
 
 /// Prescribed velocity over time, piecewise linear between (time, velocity) points, held
 /// constant before the first and after the last. One point = a constant velocity.
@@ -237,6 +246,13 @@ struct CurrentSpec {
 /// sph/shepard.hpp) during a run, written to probes/<name>.csv, with time averages over the
 /// force window in probes/<name>_mean.csv.
 enum class ProbeType { Point, Line, Plane };
+inline constexpr std::array kProbeTypeNames = {EnumName<ProbeType>{"point", ProbeType::Point},
+                                               EnumName<ProbeType>{"line", ProbeType::Line},
+                                               EnumName<ProbeType>{"plane", ProbeType::Plane}};
+constexpr std::string_view name_of(ProbeType v) {
+  return name_of(kProbeTypeNames, v);
+}
+static_assert(one_to_one(kProbeTypeNames));
 
 struct ProbeSpec {
   std::string name;  ///< file name stem; default "probe<N>"

@@ -18,6 +18,7 @@
 #include <toml++/toml.h>
 
 #include "netsph/case/case_spec.hpp"
+#include "netsph/core/enum_names.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/core/vec3.hpp"
 
@@ -74,13 +75,6 @@ struct IntRule {
   std::int64_t hi;
   /// "2 or 3", "an integer in [1, 10]"
   std::string describe() const;
-};
-
-/// One allowed word of an enumerated string key.
-template <typename E>
-struct Choice {
-  std::string_view name;
-  E value;
 };
 
 /// An array of distinct words from a fixed set: wall faces, periodic axes.
@@ -143,21 +137,21 @@ class TomlTableReader {
   Vec3d required_vec3(std::string_view key, const NumberRule& rule, std::string_view meaning) const;
   Vec3d to_vec3(std::string_view key, const toml::node& node, const NumberRule& rule) const;
 
+  /// An enumerated string key: one of the words of `choices` (an enum's table of names,
+  /// core/enum_names.hpp), listed in the table's order when the value is not.
   template <typename E, std::size_t N>
-  E choice(std::string_view key, const std::array<Choice<E>, N>& choices, E fallback) const {
+  E choice(std::string_view key, const std::array<EnumName<E>, N>& choices, E fallback) const {
     const toml::node* node = find(key);
     return node ? to_choice(key, *node, choices) : fallback;
   }
   template <typename E, std::size_t N>
   E to_choice(std::string_view key, const toml::node& node,
-              const std::array<Choice<E>, N>& choices) const {
-    std::vector<std::string_view> names;
-    for (const auto& c : choices) names.push_back(c.name);
-    const std::string word = to_word(key, node, names);
-    for (const auto& c : choices) {
-      if (c.name == word) return c.value;
-    }
-    return choices.front().value;  // unreachable: to_word() accepted the word
+              const std::array<EnumName<E>, N>& choices) const {
+    const auto names = names_of(choices);
+    const std::string word =
+        to_word(key, node, std::vector<std::string_view>(names.begin(), names.end()));
+    // to_word() accepted the word, so the table has it.
+    return value_of(choices, word).value_or(choices.front().value);
   }
 
   /// Throws "<key path> = <value>: <message>" at the position of `at` (the value itself,

@@ -25,7 +25,7 @@
 #include "netsph/distributed/collectives.hpp"
 #include "netsph/distributed/particle_exchange.hpp"
 #include "netsph/distributed/slab_partition.hpp"
-#include "netsph/solver/output_particles.hpp"
+#include "netsph/run/output_particles.hpp"
 #include "netsph/solver/simulation.hpp"
 #include "netsph/solver/step_partition.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// A distributed run as run_stepped() drives it (solver/run_stepper.hpp): every process steps
+// A distributed run as run_stepped() drives it (run/run_stepper.hpp): every process steps
 // its DistributedSimulation; process 0 also holds the view, a Simulation of the case without
 // particles whose time, bodies, nets and diagnostics the outputs read. The outputs' reads of the
 // particles (output_particles.hpp) are collective operations that process 0 names to the others,
@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "netsph/distributed/distributed_simulation.hpp"
-#include "netsph/solver/run_stepper.hpp"
+#include "netsph/run/run_stepper.hpp"
 
 namespace netsph {
 

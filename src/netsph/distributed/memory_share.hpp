@@ -8,7 +8,7 @@
 #include <string>
 
 #include "netsph/distributed/collectives.hpp"
-#include "netsph/solver/memory_preflight.hpp"
+#include "netsph/setup/memory_preflight.hpp"
 
 namespace netsph {
 

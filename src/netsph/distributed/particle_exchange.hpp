@@ -13,7 +13,7 @@
 
 #include "netsph/distributed/collectives.hpp"
 #include "netsph/distributed/slab_partition.hpp"
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph {

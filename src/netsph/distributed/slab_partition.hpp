@@ -19,7 +19,7 @@
 #include "netsph/boundary/open_boundary.hpp"
 #include "netsph/core/vec3.hpp"
 #include "netsph/distributed/collectives.hpp"
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 #include "netsph/sph/particle_set.hpp"
 
 namespace netsph {

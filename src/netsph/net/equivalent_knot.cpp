@@ -47,28 +47,4 @@ double netting_solidity(double l, double d) {
   return 2 * r - r * r;
 }
 
-const char* knot_shape_name(KnotShape shape) {
-  switch (shape) {
-    case KnotShape::SquarePlate:
-      return "square_plate";
-    case KnotShape::CircularPlate:
-      return "circular_plate";
-    case KnotShape::Sphere:
-      return "sphere";
-  }
-  return "?";
-}
-
-const char* equivalent_knot_rule_name(EquivalentKnotRule rule) {
-  switch (rule) {
-    case EquivalentKnotRule::Exact:
-      return "exact";
-    case EquivalentKnotRule::FullVolume:
-      return "full_volume";
-    case EquivalentKnotRule::Full:
-      return "full";
-  }
-  return "?";
-}
-
 }  // namespace netsph

@@ -36,7 +36,4 @@ KnotGeometry equivalent_knot(const CruciformElement& element, KnotShape shape);
 /// projected area to outline area).
 double netting_solidity(double l, double d);
 
-const char* knot_shape_name(KnotShape shape);
-const char* equivalent_knot_rule_name(EquivalentKnotRule rule);
-
 }  // namespace netsph

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <fmt/format.h>
-
 namespace netsph {
 
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
@@ -44,22 +42,6 @@ void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
     advance_coupled_nets(nets, bodies, corrector ? dt : 0.5 * dt);
     add_sinker_reactions(nets, water_loads);
   }
-}
-
-std::string body_wider_than_half_period(const CaseSpec& spec, const RigidBody& b) {
-  double radius = 0;
-  for (const Vec3f& o : b.offsets) radius = std::max(radius, norm(Vec3d(o)));
-  static const char* axis_name[] = {"x", "y", "z"};
-  for (int a = 0; a < 3; ++a) {
-    const double period = spec.domain.period(a);
-    if (!(period > 0) || radius < 0.5 * period) continue;
-    return fmt::format(
-        "body '{}' has particles up to {:.4g} m from its centre of mass, not less than half the "
-        "periodic {} axis's period ({:.4g} m): a particle's offset from the centre, taken at its "
-        "nearest periodic image, would not be its own",
-        b.name, radius, axis_name[a], period);
-  }
-  return {};
 }
 
 }  // namespace netsph

@@ -3,7 +3,6 @@
 // by the CPU solver (simulation.cpp) and the device-shaped step's host side
 // (device_setup.cpp), which keeps bodies and nets on the host and their particles on the
 // device.
-#include <string>
 #include <vector>
 
 #include "netsph/bodies/rigid_body.hpp"
@@ -23,13 +22,5 @@ namespace netsph {
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
                     std::vector<CoupledNet>& nets, double time, bool corrector, double dt,
                     const FluidSampler& sample, std::vector<FluidPointLoad>& water_loads);
-
-/// What is wrong, in words, if body `b` is as wide as half a periodic axis's period or wider
-/// (judged by its particle farthest from the centre of mass, so whatever its rotation); empty
-/// if not. A body may cross a periodic end (place_rigid_particle puts each particle at the image
-/// nearest the cell it was sorted into), but its lever arms are taken at the nearest image of
-/// each particle (rigid_lever_arm), which is its own only while the body spans less than half
-/// a period.
-std::string body_wider_than_half_period(const CaseSpec& spec, const RigidBody& b);
 
 }  // namespace netsph

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "netsph/core/error.hpp"
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 #include "netsph/solver/step_settings.hpp"
 
 namespace netsph {

@@ -3,7 +3,7 @@
 // (simulation_device.cpp) adds the hooks into its bodies and walls and starts the run.
 #include "netsph/backend/device/device_run.hpp"
 #include "netsph/case/case_spec.hpp"
-#include "netsph/solver/scene.hpp"
+#include "netsph/setup/scene.hpp"
 
 namespace netsph {
 

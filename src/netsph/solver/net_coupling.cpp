@@ -21,20 +21,18 @@ BodySpec knot_body(const NetSpec& net_spec, const NetModel& net, const NetKnot& 
   b.center = k.position;
   // Local x along the net normal (plate thickness), y across, z up.
   b.orientation = Quat::from_frame(net.normal, net.across, net.up);
+  b.shape_name = std::string(name_of(k.geometry.shape));
   switch (k.geometry.shape) {
     case KnotShape::SquarePlate:
-      b.shape_name = "square_plate";
       b.shape = BodyShape::Box;
       b.lengths = {k.geometry.thickness, k.geometry.size, k.geometry.size};
       break;
     case KnotShape::CircularPlate:
-      b.shape_name = "circular_plate";
       b.shape = BodyShape::Cylinder;
       b.diameter = k.geometry.size;
       b.length = k.geometry.thickness;
       break;
     case KnotShape::Sphere:
-      b.shape_name = "sphere";
       b.shape = BodyShape::Sphere;
       b.diameter = k.geometry.size;
       break;

@@ -392,13 +392,12 @@ void Simulation::fail_non_finite(std::int64_t i) const {
   sync_from_device();
   const Vec3d x = p_.pos[i];
   const Vec3f v = p_.vel[i];
-  static const char* kind_name[] = {"fluid", "wall", "buffer", "body"};
   throw SimulationUnstable(
       "solver",
       fmt::format("non-finite state at t = {:.6g} s (step {}): particle id {} ({}) at ({:.4g}, "
                   "{:.4g}, {:.4g}) m, velocity ({:.3g}, {:.3g}, {:.3g}) m/s, density {:.4g} kg/m^3",
-                  time_, steps_, p_.id[i], kind_name[static_cast<int>(p_.kind[i])], x.x, x.y, x.z,
-                  v.x, v.y, v.z, p_.rho[i]));
+                  time_, steps_, p_.id[i], name_of(p_.kind[i]), x.x, x.y, x.z, v.x, v.y, v.z,
+                  p_.rho[i]));
 }
 
 void Simulation::step() {
@@ -456,7 +455,7 @@ void Simulation::step() {
   // Split over processes, the largest displacement of the particles each owns (a halo copy
   // of a buffer particle near the halo's edge moves by one-sided ghost-node sums), and over
   // the processes: the one-process run's. So all sort again when it would, and a particle's
-  // candidates come from its cells, its pair sums in its order (neighbors/cell_grid.cpp).
+  // candidates come from its cells, its pair sums in its order (neighbours/cell_grid.cpp).
   double moved = symplectic_predictor(p_, in, m, partition_ ? owned_.data() : nullptr);
   moved = std::max(moved, place_body_particles(true));
   if (partition_) moved = partition_->global_max(moved);

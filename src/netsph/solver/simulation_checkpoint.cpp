@@ -41,7 +41,6 @@ void check_restored_particles(const CheckpointData& c, const Scene& scene,
   const double margin = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
   const double max_speed = 100 * scene.sound_speed;
   const double rho0 = scene.model.eos.rho0;
-  static const char* kind_name[] = {"fluid", "wall", "buffer", "body"};
   for (std::size_t i = 0; i < n; ++i) {
     const double* x = pos.data() + 3 * i;
     const float* v = vel.data() + 3 * i;
@@ -69,8 +68,7 @@ void check_restored_particles(const CheckpointData& c, const Scene& scene,
       what = "a ghost-node vector that is not finite";
     }
     if (what.empty()) continue;
-    const std::string_view kind_text =
-        kind[i] <= static_cast<std::uint8_t>(ParticleKind::Body) ? kind_name[kind[i]] : "?";
+    const std::string_view kind_text = name_of(static_cast<ParticleKind>(kind[i]));
     throw Error(c.source, fmt::format("the checkpoint is corrupt (damaged after it was "
                                       "written): particle id {} ({}) has {}. It cannot be "
                                       "continued: put back a good copy of the file, or start "

@@ -3,10 +3,13 @@
 // arrays (kept sorted by cell by the neighbour search) and are told apart by `kind`.
 // Positions are double (integrated over many steps); fields are Real (float).
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
+#include "netsph/core/enum_names.hpp"
 #include "netsph/core/growth.hpp"
 #include "netsph/core/host_device.hpp"
 #include "netsph/core/real.hpp"
@@ -20,6 +23,16 @@ enum class ParticleKind : std::uint8_t {
   Buffer = 2,  ///< open-boundary buffer particle; `group` = zone index (inlets, then outlets)
   Body = 3,    ///< boundary particle of a rigid body; `group` = body index
 };
+/// The kinds as messages about one particle name them.
+inline constexpr std::array kParticleKindNames = {
+    EnumName<ParticleKind>{"fluid", ParticleKind::Fluid},
+    EnumName<ParticleKind>{"wall", ParticleKind::Wall},
+    EnumName<ParticleKind>{"buffer", ParticleKind::Buffer},
+    EnumName<ParticleKind>{"body", ParticleKind::Body}};
+constexpr std::string_view name_of(ParticleKind v) {
+  return name_of(kParticleKindNames, v);
+}
+static_assert(one_to_one(kParticleKindNames));
 
 /// Particles the momentum and continuity equations move.
 NETSPH_HD bool is_fluid(ParticleKind k) {

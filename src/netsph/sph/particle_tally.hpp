@@ -1,7 +1,7 @@
 #pragma once
 // The global measures of a run's particles (series rows, the summary's final state) as a
 // reduction: what one particle contributes and how two partial tallies combine. The CPU's
-// OpenMP loop (solver/output_particles.cpp) and the device step's block reduction
+// OpenMP loop (run/output_particles.cpp) and the device step's block reduction
 // (backend/device/device_stepper.hpp) both reduce with these two functions, so the device
 // backends measure a run without copying its particles back.
 #include <cstdint>

@@ -7,7 +7,7 @@
 // The denominator ("coverage") is the kernel's volume sum: 1 inside the fluid, less near a
 // free surface or a solid (fluid particles only are summed), 0 where no fluid is in reach.
 // Dividing by it removes the kernel truncation there, so a uniform field is reproduced
-// exactly everywhere the point sees fluid. Velocity probes (solver/probes.hpp) use it.
+// exactly everywhere the point sees fluid. Velocity probes (run/probes.hpp) use it.
 #include "netsph/core/host_device.hpp"
 #include "netsph/core/real.hpp"
 #include "netsph/core/vec3.hpp"

@@ -15,8 +15,8 @@
 #include "netsph/io/checkpoint_file.hpp"
 #include "netsph/net/equivalent_knot.hpp"
 #include "netsph/net/net_generator.hpp"
-#include "netsph/net/standalone_net_run.hpp"
-#include "netsph/solver/runner.hpp"
+#include "netsph/run/runner.hpp"
+#include "netsph/run/standalone_net_run.hpp"
 #include "netsph/validation/reference_data.hpp"
 #include "netsph/validation/validation.hpp"
 

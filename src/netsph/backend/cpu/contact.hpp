@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "netsph/backend/cpu/interaction_view.hpp"
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 #include "netsph/sph/contact.hpp"
 #include "netsph/sph/particle_set.hpp"
 

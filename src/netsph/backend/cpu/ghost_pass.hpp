@@ -20,7 +20,7 @@
 
 #include "netsph/backend/cpu/interaction_view.hpp"
 #include "netsph/backend/cpu/neighbour_batch.hpp"
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/ghost_interpolation.hpp"
 #include "netsph/sph/kernels.hpp"

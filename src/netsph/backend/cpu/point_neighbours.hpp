@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "netsph/neighbors/cell_grid.hpp"
+#include "netsph/neighbours/cell_grid.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/particle_set.hpp"
 

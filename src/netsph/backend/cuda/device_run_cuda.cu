@@ -2,7 +2,7 @@
 // backend/device instantiated with the CUDA executor.
 #include "netsph/backend/cuda/cuda_exec.cuh"
 #include "netsph/backend/cuda/cuda_runtime_info.hpp"
-#include "netsph/backend/device/device_run.hpp"
+#include "netsph/backend/device/device_run_on.hpp"
 
 namespace netsph {
 

@@ -9,7 +9,7 @@
 // the executor's few shared helpers (CUB's sort and scans, integer kernels) are identical
 // either way.
 #include "netsph/backend/cuda/cuda_exec.cuh"
-#include "netsph/backend/device/device_run.hpp"
+#include "netsph/backend/device/device_run_on.hpp"
 
 namespace netsph {
 

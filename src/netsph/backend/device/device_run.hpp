@@ -1,11 +1,19 @@
 #pragma once
 // A device-shaped run behind a plain interface, so that code compiled by the host compiler
 // (Simulation, solver/simulation_device.cpp) drives the CUDA instantiation without seeing
-// CUDA.
+// CUDA, and without parsing the device step's template (DeviceStepper, ~1,800 lines): only the
+// executors' sources instantiate it, through device_run_on.hpp.
+#include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
-#include "netsph/backend/device/device_stepper.hpp"
+#include "netsph/backend/device/device_step_setup.hpp"
+#include "netsph/backend/device/phase_profile.hpp"
+#include "netsph/core/vec3.hpp"
+#include "netsph/sph/particle_set.hpp"
+#include "netsph/sph/particle_tally.hpp"
+#include "netsph/sph/shepard.hpp"
 
 namespace netsph {
 
@@ -30,33 +38,6 @@ class DeviceRun {
   /// The phase profile (phase_profile.hpp): on restarts its sums.
   virtual void set_profiling(bool on) = 0;
   virtual DevicePhaseTimes phase_times() const = 0;
-};
-
-template <class Exec>
-class DeviceRunOn final : public DeviceRun {
- public:
-  DeviceRunOn(DeviceSetup setup, const ParticleSet& p) : s_(std::move(setup), p) {}
-  DeviceStepReport step() override { return s_.step(); }
-  void download(ParticleSet& p) const override { s_.download(p); }
-  double time() const override { return s_.time(); }
-  std::int64_t steps() const override { return s_.steps(); }
-  std::size_t size() const override { return s_.size(); }
-  double bytes_per_particle() const override { return s_.bytes_per_particle(); }
-  void download_cell_begin(std::vector<std::uint32_t>& begin) const override {
-    s_.download_cell_begin(begin);
-  }
-  ParticleTally tally() override { return s_.tally(); }
-  void sample_fluid(std::span<const Vec3d> points, std::span<ShepardValue> values) override {
-    s_.sample_fluid(points, values);
-  }
-  void set_clock(double time, std::int64_t steps, double dt_floor) override {
-    s_.set_clock(time, steps, dt_floor);
-  }
-  void set_profiling(bool on) override { s_.set_profiling(on); }
-  DevicePhaseTimes phase_times() const override { return s_.phase_times(); }
-
- private:
-  DeviceStepper<Exec> s_;
 };
 
 /// The device step's logic on the host (backend/device/device_run_host.cpp).

@@ -1,4 +1,4 @@
-#include "netsph/backend/device/device_run.hpp"
+#include "netsph/backend/device/device_run_on.hpp"
 #include "netsph/backend/device/host_exec.hpp"
 
 namespace netsph {

@@ -6,11 +6,14 @@
 #include <functional>
 #include <vector>
 
-#include "netsph/backend/device/device_kernels.hpp"
-#include "netsph/neighbors/grid_index.hpp"
+#include "netsph/backend/device/device_types.hpp"
+#include "netsph/neighbours/grid_index.hpp"
+#include "netsph/sph/contact.hpp"
+#include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/fluid_point_loads.hpp"
 #include "netsph/sph/fluid_sampler.hpp"
 #include "netsph/sph/lost_particle.hpp"
+#include "netsph/sph/shifting.hpp"
 #include "netsph/sph/time_step.hpp"
 
 namespace netsph {

@@ -56,7 +56,7 @@
 #include "netsph/backend/device/device_step_setup.hpp"
 #include "netsph/backend/device/phase_profile.hpp"
 #include "netsph/backend/device/work_area.hpp"
-#include "netsph/neighbors/grid_index.hpp"
+#include "netsph/neighbours/grid_index.hpp"
 #include "netsph/sph/particle_tally.hpp"
 #include "netsph/sph/time_step.hpp"
 

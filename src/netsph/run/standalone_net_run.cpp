@@ -1,0 +1,233 @@
+#include "netsph/run/standalone_net_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "netsph/io/atomic_file.hpp"
+#include "netsph/io/csv_series.hpp"
+#include "netsph/io/output_folder.hpp"
+#include "netsph/net/current_loads.hpp"
+#include "netsph/net/knot_spring_solver.hpp"
+#include "netsph/net/net_generator.hpp"
+#include "netsph/run/net_output.hpp"
+#include "netsph/run/output_schedule.hpp"
+
+namespace netsph {
+namespace {
+
+struct NetState {
+  NetModel model;
+  std::unique_ptr<KnotSpringSolver> solver;
+  std::vector<Vec3d> initial;
+  std::unique_ptr<NetVtkSeries> vtk;
+  Vec3d force_sum{}, anchor_sum{};
+  int window_samples = 0;
+};
+
+Vec3d current_force(const NetModel& net, const CurrentLoadParameters& p) {
+  std::vector<Vec3d> f(net.knots.size());
+  add_current_loads(net, p, f);
+  Vec3d sum{};
+  for (const Vec3d& v : f) sum += v;
+  return sum;
+}
+
+bool finite(const NetModel& net) {
+  for (const NetKnot& k : net.knots) {
+    if (!std::isfinite(k.position.x) || !std::isfinite(k.position.y) ||
+        !std::isfinite(k.position.z) || !std::isfinite(k.velocity.x) ||
+        !std::isfinite(k.velocity.y) || !std::isfinite(k.velocity.z)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  create_output_folder(options.out_dir, "output folder");
+  NetRunReport report;
+  const double end_time = spec.simulation.end_time;
+  const double snapshot_every = snapshot_interval(spec);
+  const double series_every = series_interval(spec);
+  report.window = force_window(spec);
+
+  CurrentLoadParameters loads;
+  if (spec.current.given) {
+    loads.velocity = spec.current.velocity;
+    loads.model = spec.current.model;
+    loads.screen = spec.current.screen;
+    loads.normal_drag = spec.current.normal_drag;
+    loads.tangential_drag = spec.current.tangential_drag;
+  } else {
+    loads.model = NetLoadModel::None;
+  }
+  loads.water_density = spec.fluid.density;
+  loads.kinematic_viscosity = spec.fluid.kinematic_viscosity;
+  const double speed = norm(loads.velocity);
+  const Vec3d flow = speed > 0 ? loads.velocity / speed : Vec3d{1, 0, 0};
+
+  const NetEnvironment env = net_environment(spec);
+  std::vector<NetState> nets;
+  nets.reserve(spec.nets.size());
+  std::vector<CsvColumn> columns = {{"time", "s"}, {"substeps", ""}};
+  for (const NetSpec& ns : spec.nets) {
+    NetState st;
+    st.model = generate_net(ns, env);
+    for (const NetKnot& k : st.model.knots) st.initial.push_back(k.position);
+    st.vtk = std::make_unique<NetVtkSeries>(options.out_dir / (ns.name + ".vtk.series"));
+    nets.push_back(std::move(st));
+    nets.back().solver = std::make_unique<KnotSpringSolver>(nets.back().model);
+    for (const char* c : {"Fx", "Fy", "Fz"}) columns.push_back({ns.name + "_" + c, "N"});
+    for (const char* c : {"anchor_Fx", "anchor_Fy", "anchor_Fz"}) {
+      columns.push_back({ns.name + "_" + c, "N"});
+    }
+    columns.push_back({ns.name + "_Cd", ""});
+    columns.push_back({ns.name + "_deflection", "m"});
+    columns.push_back({ns.name + "_max_tension", "N"});
+  }
+  CsvSeries series(options.out_dir / "series.csv", columns);
+
+  auto load_function = [&](const NetModel& net, std::vector<Vec3d>& f) {
+    add_current_loads(net, loads, f);
+  };
+  int snapshot = 0;
+  auto write_snapshot = [&](double t) {
+    for (NetState& st : nets) {
+      const std::string file = fmt::format("net_{}_{:04d}.vtk", st.model.name, snapshot);
+      write_net_vtk(options.out_dir / file, st.model, st.initial);
+      st.vtk->add(file, t);
+    }
+    ++snapshot;
+  };
+  auto write_row = [&](double t, long long substeps) {
+    std::vector<double> row = {t, static_cast<double>(substeps)};
+    for (NetState& st : nets) {
+      const Vec3d f = current_force(st.model, loads);
+      const Vec3d anchor = st.solver->anchor_force(load_function);
+      const double q = 0.5 * loads.water_density * speed * speed * st.model.width * st.model.height;
+      row.insert(row.end(),
+                 {f.x, f.y, f.z, anchor.x, anchor.y, anchor.z, q > 0 ? dot(f, flow) / q : 0.0,
+                  max_normal_deflection(st.model, st.initial), st.solver->max_tension()});
+      if (t >= report.window[0] - 1e-12 && t <= report.window[1] + 1e-12) {
+        st.force_sum += f;
+        st.anchor_sum += anchor;
+        ++st.window_samples;
+      }
+    }
+    series.append(row);
+  };
+
+  double t = 0;
+  write_snapshot(0);
+  write_row(0, 0);
+  double next_snapshot = snapshot_every;
+  int last_percent = -1;
+  const long long rows = static_cast<long long>(std::ceil(end_time / series_every - 1e-9));
+  for (long long i = 1; i <= rows; ++i) {
+    const double t_next = std::min(end_time, static_cast<double>(i) * series_every);
+    for (NetState& st : nets) report.substeps += st.solver->advance(t_next - t, load_function);
+    t = t_next;
+    bool ok = true;
+    for (const NetState& st : nets) ok = ok && finite(st.model);
+    if (!ok) {
+      report.status = "unstable";
+      report.message = fmt::format(
+          "a knot's position or velocity became NaN or infinite at t = {:.6g} s; outputs up to "
+          "the previous row are kept",
+          t);
+      break;
+    }
+    write_row(t, report.substeps);
+    const bool stop = options.stop && options.stop();
+    if (t >= next_snapshot - 1e-12 || i == rows || stop) {
+      write_snapshot(t);
+      next_snapshot += snapshot_every;
+    }
+    if (stop) {
+      report.status = "interrupted";
+      report.message = fmt::format("stopped by the user at t = {:.6g} s", t);
+      break;
+    }
+    const int percent = static_cast<int>(100 * t / end_time);
+    if (options.progress && percent / 10 != last_percent / 10) {
+      fmt::print("t = {:.3f} / {:.3f} s ({}%)\n", t, end_time, percent);
+      last_percent = percent;
+    }
+  }
+  report.sim_time = t;
+
+  // The layout of a coupled run's summary.json (run/runner.cpp) where the two have the same
+  // things to say, so that one script reads both.
+  nlohmann::json j;
+  j["netsph_version"] = NETSPH_VERSION;
+  j["case"] = {
+      {"name", spec.simulation.name}, {"source", spec.source}, {"overrides", spec.overrides}};
+  j["mode"] = "standalone net";
+  j["status"] = report.status;
+  if (!report.message.empty()) j["message"] = report.message;
+  j["current"] = {{"velocity_m_s", {loads.velocity.x, loads.velocity.y, loads.velocity.z}},
+                  {"model", name_of(loads.model)}};
+  j["force_window_s"] = {report.window[0], report.window[1]};
+  j["nets"] = nlohmann::json::array();
+  for (NetState& st : nets) {
+    write_knots_csv(options.out_dir / ("knots_" + st.model.name + ".csv"), st.model, st.initial);
+    write_profile_csv(options.out_dir / ("profile_" + st.model.name + ".csv"), st.model,
+                      st.initial);
+    NetRunSummary s;
+    s.name = st.model.name;
+    s.knots = static_cast<int>(st.model.knots.size());
+    s.twines = static_cast<int>(st.model.twines.size());
+    // No series row in the force window (narrower than series_every, or a run stopped before
+    // it): the means are not measured, and NaN (null in summary.json) says so where 0 N read
+    // as a measured drag.
+    const double nan = std::nan("");
+    s.mean_force = s.mean_anchor_force = Vec3d(nan, nan, nan);
+    if (st.window_samples > 0) {
+      s.mean_force = st.force_sum / static_cast<double>(st.window_samples);
+      s.mean_anchor_force = st.anchor_sum / static_cast<double>(st.window_samples);
+    }
+    const double q = 0.5 * loads.water_density * speed * speed * st.model.width * st.model.height;
+    s.drag_coefficient = q > 0 ? dot(s.mean_force, flow) / q : nan;
+    s.max_deflection = max_normal_deflection(st.model, st.initial);
+    report.nets.push_back(s);
+    if (st.window_samples == 0) {
+      report.warnings.push_back(fmt::format(
+          "net '{}': {}, so its mean force and Cd are not measured (null)", s.name,
+          t < report.window[0]
+              ? fmt::format("the run ended at t = {:.6g} s, before output.force_window [{:.6g}, "
+                            "{:.6g}] s",
+                            t, report.window[0], report.window[1])
+              : fmt::format("no series row (every {:.6g} s) fell in output.force_window [{:.6g}, "
+                            "{:.6g}] s: widen the window or lower output.series_every",
+                            series_every, report.window[0], report.window[1])));
+    }
+    j["nets"].push_back({{"name", s.name},
+                         {"knots", s.knots},
+                         {"twines", s.twines},
+                         {"mean_force_N", {s.mean_force.x, s.mean_force.y, s.mean_force.z}},
+                         {"mean_anchor_force_N",
+                          {s.mean_anchor_force.x, s.mean_anchor_force.y, s.mean_anchor_force.z}},
+                         {"drag_N", dot(s.mean_force, flow)},
+                         {"Cd_outline", s.drag_coefficient},
+                         {"max_deflection_m", s.max_deflection},
+                         {"window_samples", st.window_samples}});
+  }
+  report.wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  j["time"] = {{"simulated_s", t}, {"end_time_s", end_time}, {"knot_substeps", report.substeps}};
+  j["performance"] = {{"wall_s", report.wall_s}};
+  j["outputs"] = {{"folder", std::filesystem::absolute(options.out_dir).string()},
+                  {"series", "series.csv"}};
+  j["warnings"] = report.warnings;
+  write_file_atomic(options.out_dir / "summary.json", j.dump(2) + "\n");
+  return report;
+}
+
+}  // namespace netsph
