@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "netsph/backend/cpu/ghost_pass.hpp"
+#include "particle_fixture.hpp"
 
 namespace netsph {
 namespace {
@@ -21,11 +22,7 @@ constexpr double kDp = 0.01;
 constexpr int kN = 12;  // lattice sites per side
 constexpr double kL = kN * kDp;
 
-struct Block {
-  ParticleSet p;
-  FluidModel m;
-  CellGrid grid;
-  InteractionView view;
+struct Block : test::ParticleBlock {
   bool periodic_x = false;
 };
 
@@ -34,34 +31,23 @@ struct Block {
 Block block(bool periodic_x) {
   Block b;
   b.periodic_x = periodic_x;
-  FluidModelInput in;
-  in.dims = 3;
-  in.dp = kDp;
-  in.c0 = 10;
-  b.m = make_fluid_model(in);
-  const double pad = periodic_x ? 0 : 4 * kDp;
-  b.grid.configure({-pad, -4 * kDp, -4 * kDp}, {kL + pad, kL + 4 * kDp, kL + 4 * kDp}, b.m.support,
-                   0.05, 3, {periodic_x, false, false});
+  b.m = make_fluid_model(test::fluid_input(3, kDp, 10));
+  test::configure_grid(b, 0, kL, 4 * kDp, 3, {periodic_x, false, false});
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> jitter(-0.3 * kDp, 0.3 * kDp), u(-1, 1);
   int n = 0;
-  for (int k = 0; k < kN; ++k)
-    for (int j = 0; j < kN; ++j)
-      for (int i = 0; i < kN; ++i, ++n) {
-        Vec3d x{(i + 0.5) * kDp + jitter(rng), (j + 0.5) * kDp + jitter(rng),
-                (k + 0.5) * kDp + jitter(rng)};
-        if (periodic_x) x.x = std::fmod(x.x + kL, kL);
-        const ParticleKind kind = n % 13 == 0   ? ParticleKind::Body
-                                  : n % 11 == 0 ? ParticleKind::Wall
-                                  : n % 7 == 0  ? ParticleKind::Buffer
-                                                : ParticleKind::Fluid;
-        const Vec3f v(Vec3d{0.2 + 0.5 * x.z + 0.01 * u(rng), 0.1 * x.x, -0.05 + 0.02 * u(rng)});
-        b.p.add(x, v, static_cast<Real>(1000 + 5 * u(rng)), kind);
-      }
-  std::vector<std::uint32_t> order;
-  b.grid.sort(b.p.pos, order);
-  reorder(b.p, order);
-  b.view.build(b.p, b.m, b.grid.origin());
+  test::for_each_site(3, kN, [&](int i, int j, int k) {
+    Vec3d x = test::site_centre(i, j, k, kDp) + Vec3d{jitter(rng), jitter(rng), jitter(rng)};
+    if (periodic_x) x.x = std::fmod(x.x + kL, kL);
+    const ParticleKind kind = n % 13 == 0   ? ParticleKind::Body
+                              : n % 11 == 0 ? ParticleKind::Wall
+                              : n % 7 == 0  ? ParticleKind::Buffer
+                                            : ParticleKind::Fluid;
+    const Vec3f v(Vec3d{0.2 + 0.5 * x.z + 0.01 * u(rng), 0.1 * x.x, -0.05 + 0.02 * u(rng)});
+    b.p.add(x, v, static_cast<Real>(1000 + 5 * u(rng)), kind);
+    ++n;
+  });
+  b.sort_and_build_view();
   return b;
 }
 

@@ -7,38 +7,13 @@
 #include <cmath>
 #include <random>
 
-#include "netsph/backend/cpu/interaction_view.hpp"
-#include "netsph/backend/cpu/rates.hpp"
 #include "netsph/sph/pair_interaction.hpp"
+#include "particle_fixture.hpp"
 
 namespace netsph {
 namespace {
 
-struct Block {
-  ParticleSet p;
-  FluidModel m;
-  CellGrid grid;
-  InteractionView view;
-  std::vector<Vec3f> acc;
-  std::vector<Real> drho;
-  RateReductions red;
-
-  void compute() {
-    std::vector<std::uint32_t> order;
-    grid.sort(p.pos, order);
-    reorder(p, order);
-    view.build(p, m, grid.origin());
-    red = compute_rates(m, grid, view, p.kind, acc, drho);
-  }
-};
-
-FluidModelInput base_input(int dims, double dp) {
-  FluidModelInput in;
-  in.dims = dims;
-  in.dp = dp;
-  in.c0 = 20;
-  return in;
-}
+using Block = test::ParticleBlock;
 
 /// n^dims fluid lattice in [0, n dp], with a hydrostatic density below z = n dp if gz != 0.
 Block lattice(int dims, int n, double dp, const FluidModelInput& in, bool walls_below = false) {
@@ -48,33 +23,26 @@ Block lattice(int dims, int n, double dp, const FluidModelInput& in, bool walls_
   auto rho_at = [&](double z) {
     return static_cast<Real>(b.m.eos.density(-in.rho0 * in.gravity.z * (top - z)));
   };
-  for (int k = walls_below ? -3 : 0; k < n; ++k)
-    for (int j = 0; j < (dims == 3 ? n : 1); ++j)
-      for (int i = 0; i < n; ++i) {
-        const Vec3d x{(i + 0.5) * dp, dims == 3 ? (j + 0.5) * dp : 0.0, (k + 0.5) * dp};
+  test::for_each_site(
+      dims, n,
+      [&](int i, int j, int k) {
+        const Vec3d x = test::site_centre(i, j, k, dp, dims);
         b.p.add(x, {}, rho_at(x.z), k < 0 ? ParticleKind::Wall : ParticleKind::Fluid);
-      }
-  const double pad = 4 * dp;
-  b.grid.configure({-pad, dims == 3 ? -pad : 0, -pad}, {top + pad, top + pad, top + pad},
-                   b.m.support, 0.05, dims);
+      },
+      walls_below ? -3 : 0);
+  test::configure_grid(b, 0, top, 4 * dp, dims);
   return b;
 }
 
 TEST(Interaction, MomentumIsConservedPairwise) {
   for (auto visc : {ViscosityModel::Artificial, ViscosityModel::Laminar}) {
-    FluidModelInput in = base_input(3, 0.01);
+    FluidModelInput in = test::fluid_input(3, 0.01, 20);
     in.gravity = {0, 0, 0};
     in.viscosity = visc;
     in.alpha = 0.1;
     in.nu = 1e-3;
     Block b = lattice(3, 8, 0.01, in);
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (std::size_t i = 0; i < b.p.size(); ++i) {
-      b.p.pos[i] += Vec3d(u(rng), u(rng), u(rng)) * 0.002;
-      b.p.vel[i] = Vec3f(Vec3d(u(rng), u(rng), u(rng)) * 0.5);
-      b.p.rho[i] = static_cast<Real>(1000 + 5 * u(rng));
-    }
+    test::perturb(b, 1, 0.002);
     b.compute();
     Vec3d total{}, scale{};
     for (std::size_t i = 0; i < b.p.size(); ++i) {
@@ -90,7 +58,7 @@ TEST(Interaction, HydrostaticBalanceInTheInterior) {
   // A hydrostatic density field: the pressure gradient cancels gravity away from the edges.
   for (int dims : {2, 3}) {
     const double dp = 0.01;
-    FluidModelInput in = base_input(dims, dp);
+    FluidModelInput in = test::fluid_input(dims, dp, 20);
     const int n = dims == 3 ? 14 : 30;
     Block b = lattice(dims, n, dp, in);
     b.compute();
@@ -113,7 +81,7 @@ TEST(Interaction, HydrostaticBalanceInTheInterior) {
 TEST(Interaction, UniformPressureGradientGivesItsAcceleration) {
   // No gravity, density rising linearly in x: interior acceleration = -grad P / rho.
   const double dp = 0.01;
-  FluidModelInput in = base_input(2, dp);
+  FluidModelInput in = test::fluid_input(2, dp, 20);
   in.gravity = {0, 0, 0};
   Block b = lattice(2, 30, dp, in);
   const double slope = 2.0;  // kg/m^3 per m
@@ -133,7 +101,7 @@ TEST(Interaction, UniformPressureGradientGivesItsAcceleration) {
 TEST(Interaction, DensityDiffusionSmoothsABump) {
   for (auto model : {DensityDiffusion::Molteni, DensityDiffusion::Fourtakas}) {
     const double dp = 0.01;
-    FluidModelInput in = base_input(2, dp);
+    FluidModelInput in = test::fluid_input(2, dp, 20);
     in.gravity = {0, 0, 0};
     in.diffusion = model;
     Block b = lattice(2, 20, dp, in);
@@ -162,7 +130,7 @@ TEST(Interaction, FourtakasLeavesHydrostaticDensityAlone) {
   double worst[2] = {0, 0};
   int k = 0;
   for (auto model : {DensityDiffusion::Molteni, DensityDiffusion::Fourtakas}) {
-    FluidModelInput in = base_input(2, dp);
+    FluidModelInput in = test::fluid_input(2, dp, 20);
     in.diffusion = model;
     Block b = lattice(2, 20, dp, in);
     b.compute();
@@ -179,7 +147,7 @@ TEST(Interaction, FourtakasLeavesHydrostaticDensityAlone) {
 
 TEST(Interaction, WallDensityRisesWhenFluidApproaches) {
   const double dp = 0.01;
-  FluidModelInput in = base_input(2, dp);
+  FluidModelInput in = test::fluid_input(2, dp, 20);
   in.gravity = {0, 0, 0};
   Block b = lattice(2, 10, dp, in, /*walls_below=*/true);
   for (std::size_t i = 0; i < b.p.size(); ++i)
@@ -199,7 +167,7 @@ TEST(Interaction, WallDensityRisesWhenFluidApproaches) {
 
 TEST(Interaction, UniformStateHasNoRates) {
   const double dp = 0.01;
-  FluidModelInput in = base_input(3, dp);
+  FluidModelInput in = test::fluid_input(3, dp, 20);
   Block b = lattice(3, 8, dp, in);
   for (std::size_t i = 0; i < b.p.size(); ++i) b.p.vel[i] = {0.3f, -0.1f, 0.2f}, b.p.rho[i] = 1000;
   b.compute();
@@ -265,7 +233,7 @@ ExactPair exact_pair(const FluidModel& m, double rho_a, double press_a, const Ne
 // a factor of rho or h^2, far outside the tolerance.
 TEST(Interaction, PairTermsMatchTheFormulasDividedTermByTerm) {
   for (const bool laminar : {false, true}) {
-    FluidModelInput in = base_input(3, 0.01);
+    FluidModelInput in = test::fluid_input(3, 0.01, 20);
     in.viscosity = laminar ? ViscosityModel::Laminar : ViscosityModel::Artificial;
     in.nu = 1e-3;  // large enough for the laminar term to matter next to the pressure
     const FluidModel m = make_fluid_model(in);

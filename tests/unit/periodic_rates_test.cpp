@@ -6,11 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <vector>
 
-#include "netsph/backend/cpu/interaction_view.hpp"
-#include "netsph/backend/cpu/rates.hpp"
+#include "particle_fixture.hpp"
 
 namespace netsph {
 namespace {
@@ -19,30 +17,10 @@ constexpr double kDp = 0.01;
 constexpr int kN = 8;  // lattice cells per side: period 8 dp = 5 grid cells (the minimum)
 constexpr double kL = kN * kDp;
 
-struct Block {
-  ParticleSet p;
-  FluidModel m;
-  CellGrid grid;
-  InteractionView view;
-  std::vector<Vec3f> acc;
-  std::vector<Real> drho;
-  ShiftingSums shifting;
-
-  void compute() {
-    std::vector<std::uint32_t> order;
-    grid.sort(p.pos, order);
-    ASSERT_EQ(order.size(), p.size()) << "particles outside the grid";
-    reorder(p, order);
-    view.build(p, m, grid.origin());
-    compute_rates(m, grid, view, p.kind, acc, drho, &shifting);
-  }
-};
+using Block = test::ParticleBlock;
 
 FluidModelInput input(DensityDiffusion diffusion = DensityDiffusion::Molteni) {
-  FluidModelInput in;
-  in.dims = 3;
-  in.dp = kDp;
-  in.c0 = 20;
+  FluidModelInput in = test::fluid_input(3, kDp, 20);
   in.alpha = 0.1;
   in.diffusion = diffusion;
   return in;
@@ -53,11 +31,11 @@ Block periodic_lattice(const FluidModelInput& in,
                        const Vec3d& offset = {0.5 * kDp, 0.5 * kDp, 0.5 * kDp}) {
   Block b;
   b.m = make_fluid_model(in);
-  b.grid.configure({0, 0, 0}, {kL, kL, kL}, b.m.support, 0.05, 3, {true, true, true});
-  for (int k = 0; k < kN; ++k)
-    for (int j = 0; j < kN; ++j)
-      for (int i = 0; i < kN; ++i)
-        b.p.add(Vec3d{i * kDp, j * kDp, k * kDp} + offset, {}, 1000, ParticleKind::Fluid);
+  b.with_shifting = true;
+  test::configure_grid(b, 0, kL, 0, 3, {true, true, true});
+  test::for_each_site(3, kN, [&](int i, int j, int k) {
+    b.p.add(Vec3d{i * kDp, j * kDp, k * kDp} + offset, {}, 1000, ParticleKind::Fluid);
+  });
   return b;
 }
 
@@ -98,17 +76,6 @@ TEST(PeriodicRates, UniformStateAcrossBoundaryAtCellFaces) {
   }
 }
 
-/// Random position, velocity and density perturbations (positions wrapped into the period).
-void perturb(Block& b, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (std::size_t i = 0; i < b.p.size(); ++i) {
-    b.p.pos[i] += Vec3d(u(rng), u(rng), u(rng)) * (0.3 * kDp);
-    b.p.vel[i] = Vec3f(Vec3d(u(rng), u(rng), u(rng)) * 0.5);
-    b.p.rho[i] = static_cast<Real>(1000 + 5 * u(rng));
-  }
-}
-
 TEST(PeriodicRates, MomentumIsConservedAcrossThePeriodicBoundary) {
   for (auto visc : {ViscosityModel::Artificial, ViscosityModel::Laminar}) {
     FluidModelInput in = input();
@@ -116,7 +83,7 @@ TEST(PeriodicRates, MomentumIsConservedAcrossThePeriodicBoundary) {
     in.nu = 1e-3;
     // Lattice at 0.9 dp + perturbation: the last layer crosses hi and must be wrapped.
     Block b = periodic_lattice(in, {0.9 * kDp, 0.9 * kDp, 0.9 * kDp});
-    perturb(b, 3);
+    test::perturb(b, 3, 0.3 * kDp);
     EXPECT_GT(b.grid.wrap(b.p.pos), 50u);
     b.compute();
     Vec3d total{}, scale{};
@@ -137,14 +104,13 @@ TEST(PeriodicRates, SameAsTheMiddleOfATiledBlock) {
   // the middle copy sees exactly the neighbours the periodic images provide.
   const FluidModelInput in = input();
   Block per = periodic_lattice(in, {0.9 * kDp, 0.4 * kDp, 0.7 * kDp});
-  perturb(per, 9);
+  test::perturb(per, 9, 0.3 * kDp);
   per.grid.wrap(per.p.pos);
 
   Block tiled;
   tiled.m = make_fluid_model(in);
-  const double pad = 4 * kDp;
-  tiled.grid.configure({-kL - pad, -kL - pad, -kL - pad},
-                       {2 * kL + pad, 2 * kL + pad, 2 * kL + pad}, tiled.m.support, 0.05, 3);
+  tiled.with_shifting = true;
+  test::configure_grid(tiled, -kL, 2 * kL, 4 * kDp);
   std::vector<std::uint32_t> middle_id(per.p.size());
   for (int tz = -1; tz <= 1; ++tz)
     for (int ty = -1; ty <= 1; ++ty)

@@ -13,6 +13,7 @@
 
 #include "netsph/backend/cpu/probe_pass.hpp"
 #include "netsph/sph/fluid_point_loads.hpp"
+#include "particle_fixture.hpp"
 
 namespace netsph {
 namespace {
@@ -21,19 +22,7 @@ constexpr double kDp = 0.01;
 constexpr int kN = 12;  // lattice particles per side
 constexpr double kL = kN * kDp;
 
-struct Block {
-  ParticleSet p;
-  FluidModel m;
-  CellGrid grid;
-
-  /// Sorts the particles by cell, as the solver does before any pass.
-  void sort() {
-    std::vector<std::uint32_t> order;
-    grid.sort(p.pos, order);
-    ASSERT_EQ(order.size(), p.size());
-    reorder(p, order);
-  }
-
+struct Block : test::ParticleBlock {
   ShepardValue at(const Vec3d& x) const {
     std::vector<Vec3d> points{x};
     std::vector<ShepardValue> values(1);
@@ -43,25 +32,18 @@ struct Block {
 };
 
 /// A kN^3 lattice in [0, kL)^3 (particle centres at (i + 1/2) dp), in a grid with room around
-/// it; velocity v(x) and density from `rho_of`.
+/// it; velocity v(x), density 1002.
 template <class Velocity>
 Block lattice(Velocity velocity, std::array<bool, 3> periodic = {}) {
   Block b;
-  FluidModelInput in;
-  in.dims = 3;
-  in.dp = kDp;
-  in.c0 = 10;
+  FluidModelInput in = test::fluid_input(3, kDp, 10);
   in.p_background = 100;
   b.m = make_fluid_model(in);
-  const double pad = periodic[0] ? 0 : 4 * kDp;
-  b.grid.configure({-pad, -4 * kDp, -4 * kDp}, {kL + pad, kL + 4 * kDp, kL + 4 * kDp}, b.m.support,
-                   0.05, 3, periodic);
-  for (int k = 0; k < kN; ++k)
-    for (int j = 0; j < kN; ++j)
-      for (int i = 0; i < kN; ++i) {
-        const Vec3d x{(i + 0.5) * kDp, (j + 0.5) * kDp, (k + 0.5) * kDp};
-        b.p.add(x, Vec3f(velocity(x)), 1002, ParticleKind::Fluid);
-      }
+  test::configure_grid(b, 0, kL, 4 * kDp, 3, periodic);
+  test::for_each_site(3, kN, [&](int i, int j, int k) {
+    const Vec3d x = test::site_centre(i, j, k, kDp);
+    b.p.add(x, Vec3f(velocity(x)), 1002, ParticleKind::Fluid);
+  });
   b.sort();
   return b;
 }
