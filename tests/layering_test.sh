@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Layering (issue 43): every module includes only the headers of the modules it links, as
 # src/CMakeLists.txt declares them (tools/check_layering.py). The real tree must pass; a copy
-# with a forbidden include (sph including run), one with a folder no module declares and one
-# including a header that does not exist must each fail, naming the file and the module.
+# with a forbidden include (sph including run), one with a folder no module declares, one
+# including a header that does not exist and one hiding an include between comment
+# look-alikes must each fail, naming the file and the module.
 # Usage: tests/layering_test.sh <repo-root>
 set -euo pipefail
 if [ $# -ne 1 ]; then
@@ -71,5 +72,18 @@ echo '#include "netsph/core/no_such_header.hpp"' >> "$dir/$victim"
 out="$(expect_failure "$dir")"
 grep -qxF "$victim:$line: includes netsph/core/no_such_header.hpp, which does not exist" <<< "$out" \
   || { echo "$out" >&2; fail "missing header not named"; }
+
+# 5. A forbidden include after a "/*" in a line comment and before a "*/" in a later
+# comment: the text between is not a block comment, and the include is still seen.
+echo "== include between comment look-alikes"
+dir="$(copy lookalike)"
+victim="$(cd "$dir" && find src/netsph/sph -maxdepth 1 -name '*.hpp' | sort | head -n 1)"
+[ -z "$(tail -c 1 "$dir/$victim")" ] || echo >> "$dir/$victim"
+line=$(( $(wc -l < "$dir/$victim") + 2 ))
+printf '// files such as snapshots/*.h5\n#include "netsph/run/runner.hpp"\nint f(int /*unused*/);\n' \
+  >> "$dir/$victim"
+out="$(expect_failure "$dir")"
+expected="$victim:$line: includes netsph/run/runner.hpp (module run), but netsph_sph does not link netsph_run"
+grep -qxF "$expected" <<< "$out" || { echo "$out" >&2; fail "expected the line: $expected"; }
 
 echo "PASS: layering checker"

@@ -385,11 +385,17 @@ def allowed_modules(modules: dict[str, Module]) -> dict[str, set[str]]:
 # The includes.
 
 def strip_block_comments(text: str) -> str:
-    """Blank /* */ comments, keeping newlines so line numbers stay right. Line comments need
-    no care: an include is matched only at the start of a line."""
+    """Blank /* */ comments, keeping newlines so line numbers stay right. A `/*` inside a line
+    comment or a string or character literal starts nothing (`// snapshots/*.h5` must not
+    hide the includes below it), so those are matched first and kept as they are; an include
+    is matched only at the start of a line, so line comments need no other care."""
+    token = re.compile(r'//[^\n]*|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|/\*.*?\*/', re.DOTALL)
+
     def blank(m: re.Match[str]) -> str:
+        if not m.group(0).startswith("/*"):
+            return m.group(0)
         return "".join("\n" if ch == "\n" else " " for ch in m.group(0))
-    return re.sub(r"/\*.*?\*/", blank, text, flags=re.DOTALL)
+    return token.sub(blank, text)
 
 
 def module_of(path_under_netsph: str, folders: list[tuple[str, str]]) -> str | None:

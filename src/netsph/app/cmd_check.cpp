@@ -9,7 +9,7 @@
 #include "netsph/app/commands.hpp"
 #include "netsph/app/scene_report.hpp"
 #include "netsph/net/net_generator.hpp"
-#include "netsph/run/run_outputs.hpp"
+#include "netsph/run/output_schedule.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph::app {

@@ -9,7 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "netsph/io/snapshot_writer.hpp"
-#include "netsph/run/run_outputs.hpp"
+#include "netsph/run/output_schedule.hpp"
 
 namespace netsph::app {
 

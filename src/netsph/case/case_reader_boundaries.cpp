@@ -16,7 +16,8 @@ namespace {
 
 const std::vector<std::string_view> kProfileKeys = {"z", "u"};
 
-/// A wall's slip words, its default (no_slip) first.
+/// A wall's slip words, in the order [[wall]] has always listed them in its messages (its
+/// default, wall_velocity, last).
 constexpr auto kWallSlips =
     reordered(kWallSlipNames, {WallSlip::NoSlip, WallSlip::FreeSlip, WallSlip::WallVelocity});
 /// The faces a wall can have in 2D, in kFaceNames' order.

@@ -3,7 +3,10 @@
 // words the logs, summary.json and the case reader's messages print. Each enum's table sits
 // right below the enum (core/physics_options.hpp, case/case_spec.hpp, sph/particle_set.hpp);
 // the case reader parses with it (TomlTableReader::choice) and everything else prints with
-// name_of(), so a value and its word are written once.
+// name_of(), so a value and its word are written once. Where some messages name a value in
+// other words (the kernel as the log's scene summary names it, a particle kind as the set-up
+// names its source), that spelling is a second table beside the first (kKernelTypeLabels,
+// kParticleKindSources), not a switch elsewhere.
 //
 // A table's order is the order the case reader lists the words in its messages ("must be one
 // of ..."), usually the default first; reordered() gives another listing of the same words.

@@ -2,9 +2,9 @@
 // A checkpoint on disk: named arrays of doubles, floats, 32-bit and 8-bit unsigned integers and
 // texts in one HDF5 file (groups /f64, /f32, /u32, /u8, /text), stored bit for bit, so that a
 // run restarted from it continues exactly as the run that wrote it would have. What the arrays
-// hold is the business of the code that fills them (solver/checkpoint.hpp); this file only
-// stores them. Written to a temporary file and renamed, so that a run that dies while writing
-// keeps its previous checkpoint.
+// hold is the business of the code that fills them (solver/simulation_checkpoint.cpp,
+// RunOutputs::save_state); this file only stores them. Written to a temporary file and
+// renamed, so that a run that dies while writing keeps its previous checkpoint.
 #include <cstdint>
 #include <filesystem>
 #include <functional>

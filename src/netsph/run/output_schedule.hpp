@@ -2,6 +2,9 @@
 // When a run's periodic outputs fall due. One rule for all of them (snapshots and net shapes,
 // series rows, probe rows and probe samples): due at the run's start, then every `every`
 // seconds of simulated time, and the default intervals derived from the case in one place.
+// Two clocks keep rules of their own, which their files give: checkpoints (runner.cpp: by
+// simulated time or wall time, never at the start) and the standalone net run's fixed-step
+// loop (standalone_net_run.cpp, which takes its intervals from here).
 #include <array>
 
 #include "netsph/case/case_spec.hpp"

@@ -10,23 +10,6 @@
 // The domain of a scene: the case's, checked against every particle, or the default around
 // them.
 namespace netsph::scene_build {
-namespace {
-
-const char* kind_name(ParticleKind k) {
-  switch (k) {
-    case ParticleKind::Fluid:
-      return "fill";
-    case ParticleKind::Wall:
-      return "wall";
-    case ParticleKind::Buffer:
-      return "open-boundary buffer";
-    case ParticleKind::Body:
-      return "body";
-  }
-  return "particle";
-}
-
-}  // namespace
 
 std::pair<Vec3d, Vec3d> set_domain(const CaseSpec& spec, Scene& scene,
                                    const WholeBounds& whole_bounds) {
@@ -56,7 +39,7 @@ std::pair<Vec3d, Vec3d> set_domain(const CaseSpec& spec, Scene& scene,
       if (!inside) {
         // Name the wall or body (its table's line) and the extent the domain must hold: a
         // [domain] equal to a tank's box leaves the wall layers outside it.
-        std::string where = spec.source, what = kind_name(p.kind[i]);
+        std::string where = spec.source, what{name_of(kParticleKindSources, p.kind[i])};
         if (p.kind[i] == ParticleKind::Wall && p.group[i] < spec.walls.size()) {
           where = spec.walls[p.group[i]].where.str();
           what = "wall '" + spec.walls[p.group[i]].name + "'";
@@ -73,7 +56,7 @@ std::pair<Vec3d, Vec3d> set_domain(const CaseSpec& spec, Scene& scene,
                                 what, x.x, x.y, x.z, scene.domain_min.x, scene.domain_min.y,
                                 scene.domain_min.z, scene.domain_max.x, scene.domain_max.y,
                                 scene.domain_max.z, whole_lo.x, whole_lo.y, whole_lo.z, whole_hi.x,
-                                whole_hi.y, whole_hi.z, kind_name(p.kind[i])));
+                                whole_hi.y, whole_hi.z, name_of(kParticleKindSources, p.kind[i])));
       }
     }
   } else {

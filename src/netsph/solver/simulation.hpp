@@ -13,7 +13,8 @@
 //                                water loads -> corrector
 //            checks: non-finite state, dt below the floor
 //
-// run() adds the outputs (snapshots, series.csv, summary.json) and the progress display.
+// run_simulation (run/runner.hpp) adds the outputs (snapshots, series.csv, summary.json) and
+// the progress display.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -45,8 +46,8 @@
 
 namespace netsph {
 
-/// Thrown by step() when the state becomes unusable; run() catches it, writes what it can
-/// and reports it.
+/// Thrown by step() when the state becomes unusable; run_stepped (run/runner.cpp) catches it,
+/// writes what it can and reports it.
 class SimulationUnstable : public Error {
  public:
   using Error::Error;

@@ -33,6 +33,14 @@ constexpr std::string_view name_of(ParticleKind v) {
   return name_of(kParticleKindNames, v);
 }
 static_assert(one_to_one(kParticleKindNames));
+/// The kinds as the set-up's messages name where a particle came from (setup/scene_domain.cpp):
+/// a second spelling, by source.
+inline constexpr std::array kParticleKindSources = {
+    EnumName<ParticleKind>{"fill", ParticleKind::Fluid},
+    EnumName<ParticleKind>{"wall", ParticleKind::Wall},
+    EnumName<ParticleKind>{"open-boundary buffer", ParticleKind::Buffer},
+    EnumName<ParticleKind>{"body", ParticleKind::Body}};
+static_assert(one_to_one(kParticleKindSources));
 
 /// Particles the momentum and continuity equations move.
 NETSPH_HD bool is_fluid(ParticleKind k) {
