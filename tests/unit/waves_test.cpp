@@ -1,0 +1,125 @@
+// Linear wave theory (waves/): the dispersion relation with and without a current, the
+// breaking steepness and the wavemaker transfer functions, against their analytic limits and
+// residuals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "netsph/core/error.hpp"
+#include "netsph/waves/dispersion.hpp"
+#include "netsph/waves/wavemaker_theory.hpp"
+
+namespace netsph {
+namespace {
+
+constexpr double g = kStandardGravity;
+
+// The residual of omega^2 = g k tanh(kh) is round-off (a few ulp of omega^2) over depths from
+// shallow (kh = 0.01) to deep (kh = 50) water.
+TEST(Dispersion, WaveNumberSolvesTheDispersionRelation) {
+  for (double h : {0.05, 0.5, 5.0, 500.0}) {
+    for (double period : {0.5, 1.0, 2.0, 8.0, 20.0}) {
+      const double omega = 2 * M_PI / period;
+      const double k = wave_number(omega, h, g);
+      EXPECT_NEAR(g * k * std::tanh(k * h), omega * omega, 1e-13 * omega * omega)
+          << "h " << h << " T " << period;
+    }
+  }
+}
+
+// Deep water (kh >> 1): k = omega^2 / g. Shallow water (kh << 1): the wave speed omega / k
+// tends to sqrt(g h) with relative error (kh)^2 / 6 (tanh x = x - x^3/3 + ...).
+TEST(Dispersion, DeepAndShallowWaterLimits) {
+  const double omega = 2 * M_PI / 1.0;
+  EXPECT_NEAR(wave_number(omega, 100.0, g), omega * omega / g, 1e-12 * omega * omega / g);
+  const double h = 0.01, omega_long = 2 * M_PI / 60.0;
+  const double k = wave_number(omega_long, h, g);
+  const double kh = k * h;
+  ASSERT_LT(kh, 0.01);
+  EXPECT_NEAR(omega_long / k, std::sqrt(g * h), 0.2 * kh * kh * std::sqrt(g * h));
+}
+
+// The tabulated value of Dean & Dalrymple (1991), Appendix C: at h / L0 = 0.1 (deep-water
+// wavelength L0 = g T^2 / 2 pi), h / L = 0.1410 and tanh(kh) = 0.7093 (to the table's 4 digits).
+TEST(Dispersion, MatchesTheTextbookTable) {
+  const double period = 2.0, L0 = g * period * period / (2 * M_PI), h = 0.1 * L0;
+  const double L = 2 * M_PI / wave_number(2 * M_PI / period, h, g);
+  EXPECT_NEAR(h / L, 0.1410, 0.00006);
+  EXPECT_NEAR(std::tanh(2 * M_PI * h / L), 0.7093, 0.00006);
+}
+
+// On a current the Doppler-shifted relation (omega - k U)^2 = g k tanh(kh) holds, a following
+// current lengthens the wave and an opposing one shortens it, and U = 0 is the plain relation.
+TEST(Dispersion, CurrentShiftsTheWaveNumber) {
+  const double h = 0.5, omega = 2 * M_PI / 1.2;
+  const double k0 = wave_number(omega, h, g);
+  EXPECT_EQ(wave_number_on_current(omega, h, 0.0, g), k0);
+  for (double U : {-0.3, -0.2, 0.2, 0.5}) {
+    const double k = wave_number_on_current(omega, h, U, g);
+    const double sigma = omega - k * U;
+    EXPECT_GT(sigma, 0);
+    EXPECT_NEAR(sigma * sigma, g * k * std::tanh(k * h), 1e-12 * omega * omega) << "U " << U;
+    if (U > 0) {
+      EXPECT_LT(k, k0);
+    } else {
+      EXPECT_GT(k, k0);
+    }
+  }
+  // Continuity at U -> 0 (the branch connected to the still-water wave).
+  EXPECT_NEAR(wave_number_on_current(omega, h, 1e-9, g), k0, 1e-6 * k0);
+  EXPECT_NEAR(wave_number_on_current(omega, h, -1e-9, g), k0, 1e-6 * k0);
+}
+
+// Deep water blocking: a wave of frequency omega cannot travel against a current faster than
+// U = g / (4 omega) (its relative group velocity g / (2 sigma) equals -U where sigma = 2 omega;
+// e.g. Jonsson 1990). Just below that speed it exists; just above it does not.
+TEST(Dispersion, OpposingCurrentBlocksTheWave) {
+  const double h = 1000.0, omega = 2 * M_PI / 1.0;
+  const double U_block = g / (4 * omega);
+  EXPECT_NO_THROW(wave_number_on_current(omega, h, -0.999 * U_block, g));
+  EXPECT_THROW(wave_number_on_current(omega, h, -1.001 * U_block, g), Error);
+  // Shallow water: no wave against a current faster than sqrt(g h).
+  EXPECT_THROW(wave_number_on_current(omega, 0.1, -1.1 * std::sqrt(g * 0.1), g), Error);
+}
+
+TEST(Dispersion, BadInputIsRefused) {
+  EXPECT_THROW(wave_number(0.0, 1.0, g), Error);
+  EXPECT_THROW(wave_number(1.0, -1.0, g), Error);
+  EXPECT_THROW(wave_number(1.0, 1.0, 0.0), Error);
+  EXPECT_THROW(wave_number(std::nan(""), 1.0, g), Error);
+}
+
+// Miche's limit: H/L = 0.142 in deep water, 0.142 kh (so H/h = 0.142 * 2 pi = 0.89) in
+// shallow water.
+TEST(Dispersion, BreakingSteepness) {
+  // tanh x = 1 - 2 e^-2x + ... and x - x^3 / 3 + ...: the bounds are the first terms dropped.
+  EXPECT_NEAR(breaking_steepness(10.0), 0.142, 0.142 * 2 * std::exp(-20.0) + 1e-15);
+  const double kh = 0.01;
+  EXPECT_NEAR(breaking_steepness(kh), 0.142 * kh, 0.142 * kh * kh * kh / 3 + 1e-15);
+}
+
+// Biesel's transfer functions: shallow-water slopes kh (piston) and kh / 2 (flap), both 2 in
+// deep water; the flap always makes the lower wave for the same stroke; the large-kh branch
+// joins the formula.
+TEST(Wavemaker, BieselTransferFunctionLimits) {
+  for (double kh : {1e-3, 1e-2}) {
+    EXPECT_NEAR(piston_height_to_stroke(kh), kh, 0.01 * kh);
+    EXPECT_NEAR(flap_height_to_stroke(kh), kh / 2, 0.01 * kh);
+  }
+  // Deep water: the piston's 2 with error 4 (1 + 2kh) e^-2kh, the flap's 2 (1 - 1/kh) with error
+  // 2 / (kh cosh kh) (the first terms the limits drop).
+  const double x = 15.0;
+  EXPECT_NEAR(piston_height_to_stroke(x), 2.0, 1.01 * 4 * (1 + 2 * x) * std::exp(-2 * x) + 1e-15);
+  EXPECT_NEAR(flap_height_to_stroke(x), 2 * (1 - 1 / x), 1.01 * 2 / (x * std::cosh(x)) + 1e-12);
+  EXPECT_NEAR(piston_height_to_stroke(20.0), piston_height_to_stroke(20.0 + 1e-9), 1e-12);
+  EXPECT_NEAR(flap_height_to_stroke(20.0), flap_height_to_stroke(20.0 + 1e-9), 1e-9);
+  for (double kh = 0.1; kh < 10; kh *= 1.3) {
+    EXPECT_LT(flap_height_to_stroke(kh), piston_height_to_stroke(kh));
+    EXPECT_LT(piston_height_to_stroke(kh), piston_height_to_stroke(1.3 * kh));
+  }
+  // A value from the formula by hand (kh = 1): 2 (cosh 2 - 1) / (sinh 2 + 2) = 0.98179.
+  EXPECT_NEAR(piston_height_to_stroke(1.0), 0.98179, 1e-5);
+}
+
+}  // namespace
+}  // namespace netsph
