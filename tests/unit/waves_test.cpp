@@ -7,6 +7,7 @@
 
 #include "netsph/core/error.hpp"
 #include "netsph/waves/dispersion.hpp"
+#include "netsph/waves/wave_kinematics.hpp"
 #include "netsph/waves/wavemaker_theory.hpp"
 
 namespace netsph {
@@ -119,6 +120,103 @@ TEST(Wavemaker, BieselTransferFunctionLimits) {
   }
   // A value from the formula by hand (kh = 1): 2 (cosh 2 - 1) / (sinh 2 + 2) = 0.98179.
   EXPECT_NEAR(piston_height_to_stroke(1.0), 0.98179, 1e-5);
+}
+
+// A regular wave of the flumes issue 44 asks for: h = 0.5 m, kh = 1.5, H/L = 0.02, on a
+// current U.
+RegularWave flume_wave(double U, int order) {
+  RegularWave w;
+  w.depth = 0.5;
+  w.k = 1.5 / w.depth;
+  w.current = U;
+  w.omega = intrinsic_frequency(w.k, w.depth, g) + w.k * U;  // the absolute frequency
+  w.height = 0.02 * 2 * M_PI / w.k;
+  w.order = order;
+  w.phase = 0.3;
+  return w;
+}
+
+// Potential flow is incompressible: du/dx + dw/dz = 0 (central differences, error O(d^2)
+// relative to k^2 times the velocity's scale), at first and second order, with and without a
+// current; and the bottom is impermeable, w(z = -h) = 0.
+TEST(WaveKinematics, OrbitalVelocityIsDivergenceFreeAndStopsAtTheBottom) {
+  for (double U : {0.0, 0.2, -0.2}) {
+    for (int order : {1, 2}) {
+      const RegularWave w = flume_wave(U, order);
+      const double scale = 0.5 * w.height * intrinsic_omega(w) / std::tanh(w.k * w.depth);
+      const double d = 1e-4 / w.k;
+      for (double z : {-0.45, -0.25, -0.05}) {
+        for (double x : {0.0, 0.37, 1.1}) {
+          double u1, w1, u2, w2, u3, w3, u4, w4;
+          wave_velocity(w, x + d, z, 0.7, u1, w1);
+          wave_velocity(w, x - d, z, 0.7, u2, w2);
+          wave_velocity(w, x, z + d, 0.7, u3, w3);
+          wave_velocity(w, x, z - d, 0.7, u4, w4);
+          const double div = (u1 - u2) / (2 * d) + (w3 - w4) / (2 * d);
+          EXPECT_NEAR(div, 0.0, 1e-6 * w.k * scale) << "U " << U << " order " << order;
+        }
+      }
+      double u, up;
+      wave_velocity(w, 0.4, -w.depth, 1.3, u, up);
+      EXPECT_NEAR(up, 0.0, 1e-15 * scale);
+    }
+  }
+}
+
+// The linear free-surface conditions at z = 0, which tie the kinematics to the dispersion
+// relation solved by wave_number_on_current: kinematic, d(eta)/dt + U d(eta)/dx = w; dynamic
+// (in the frame moving with the current), the surface velocity amplitude
+// (H/2) sigma coth kh equals (H/2) g k / sigma.
+TEST(WaveKinematics, LinearWaveSatisfiesTheFreeSurfaceConditions) {
+  for (double U : {0.0, 0.2, -0.2}) {
+    RegularWave w = flume_wave(U, 1);
+    w.k = wave_number_on_current(w.omega, w.depth, U, g);  // from the absolute frequency
+    const double sigma = intrinsic_omega(w);
+    const double dt = 1e-5 / w.omega, dx = 1e-5 / w.k;
+    for (double t : {0.1, 0.55, 1.2}) {
+      const double x = 0.8;
+      const double deta_dt =
+          (wave_elevation(w, x, t + dt) - wave_elevation(w, x, t - dt)) / (2 * dt);
+      const double deta_dx =
+          (wave_elevation(w, x + dx, t) - wave_elevation(w, x - dx, t)) / (2 * dx);
+      double u, up;
+      wave_velocity(w, x, 0.0, t, u, up);
+      EXPECT_NEAR(deta_dt + U * deta_dx, up, 1e-7 * w.height * sigma) << "U " << U;
+    }
+    const double kh = w.k * w.depth;
+    EXPECT_NEAR(0.5 * w.height * sigma / std::tanh(kh), 0.5 * w.height * g * w.k / sigma,
+                1e-12 * w.height * sigma);
+  }
+}
+
+// Stokes' second order raises the crests and flattens the troughs by its cos 2 theta
+// amplitude and leaves the mean level where it was; at this steepness (H/L = 0.02, kh = 1.5)
+// that amplitude is a few percent of the first-order one.
+TEST(WaveKinematics, StokesSecondOrderSharpensTheCrests) {
+  const RegularWave w = flume_wave(0.0, 2);
+  const double a2 = second_order_surface_amplitude(w);
+  EXPECT_GT(a2, 0.01 * 0.5 * w.height);
+  EXPECT_LT(a2, 0.1 * 0.5 * w.height);
+  const double T = 2 * M_PI / w.omega, t_crest = w.phase / w.omega;
+  EXPECT_NEAR(wave_elevation(w, 0.0, t_crest), 0.5 * w.height + a2, 1e-12);
+  EXPECT_NEAR(wave_elevation(w, 0.0, t_crest + T / 2), -0.5 * w.height + a2, 1e-12);
+  double mean = 0;
+  const int n = 1000;
+  for (int i = 0; i < n; ++i) mean += wave_elevation(w, 0.0, T * i / n) / n;
+  EXPECT_NEAR(mean, 0.0, 1e-12);
+  EXPECT_EQ(second_order_surface_amplitude(flume_wave(0.0, 1)), 0.0);
+}
+
+// The ramp rises from 0 to 1 with zero slope at both ends.
+TEST(WaveKinematics, RampStartsAndEndsSmoothly) {
+  const double ramp = 2.0, e = 1e-6;
+  EXPECT_EQ(wave_ramp(0.0, ramp), 0.0);
+  EXPECT_EQ(wave_ramp(ramp, ramp), 1.0);
+  EXPECT_EQ(wave_ramp(5.0, ramp), 1.0);
+  EXPECT_NEAR(wave_ramp(1.0, ramp), 0.5, 1e-15);
+  EXPECT_LT(wave_ramp(e, ramp) / e, 1e-5);  // slope pi^2 t / (2 ramp^2) near 0
+  EXPECT_LT((1 - wave_ramp(ramp - e, ramp)) / e, 1e-5);
+  EXPECT_EQ(wave_ramp(0.3, 0.0), 1.0);  // no ramp
 }
 
 }  // namespace
