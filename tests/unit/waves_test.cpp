@@ -7,6 +7,7 @@
 
 #include "netsph/core/error.hpp"
 #include "netsph/waves/dispersion.hpp"
+#include "netsph/waves/irregular_waves.hpp"
 #include "netsph/waves/wave_kinematics.hpp"
 #include "netsph/waves/wavemaker_theory.hpp"
 
@@ -217,6 +218,71 @@ TEST(WaveKinematics, RampStartsAndEndsSmoothly) {
   EXPECT_LT(wave_ramp(e, ramp) / e, 1e-5);  // slope pi^2 t / (2 ramp^2) near 0
   EXPECT_LT((1 - wave_ramp(ramp - e, ramp)) / e, 1e-5);
   EXPECT_EQ(wave_ramp(0.3, 0.0), 1.0);  // no ramp
+}
+
+// The discrete sea state holds Hm0 = 4 sqrt(m0) = Hs exactly: in its amplitudes, and in the
+// variance of the elevation over one repeat period 1 / df, sampled finely enough that the
+// components stay orthogonal (frequencies (i + 1/2) df: every product averages to zero).
+TEST(IrregularWaves, JonswapSeaStateHoldsItsSignificantHeight) {
+  const JonswapSpec s{0.1, 1.6, 3.3};
+  const double f_min = 0.2, f_max = 2.0;
+  const int n = 90;
+  const std::vector<WaveComponent> c = jonswap_components(s, f_min, f_max, n, 7);
+  double m0 = 0;
+  for (const WaveComponent& w : c) m0 += 0.5 * w.amplitude * w.amplitude;
+  EXPECT_NEAR(4 * std::sqrt(m0), s.hs, 1e-12 * s.hs);
+  const double df = (f_max - f_min) / n, record = 1 / df;
+  const int samples = 4 * static_cast<int>(f_max / df);
+  double var = 0;
+  for (int i = 0; i < samples; ++i) {
+    const double eta = irregular_elevation(c, record * i / samples);
+    var += eta * eta / samples;
+  }
+  EXPECT_NEAR(4 * std::sqrt(var), s.hs, 1e-9 * s.hs);
+}
+
+// The shape peaks at fp = 1 / Tp, and the peak is gamma times that of the Pierson-Moskowitz
+// shape (gamma = 1) of the same Tp; the energy sits about the peak.
+TEST(IrregularWaves, JonswapPeaksAtThePeakPeriod) {
+  const JonswapSpec s{0.1, 1.6, 3.3}, pm{0.1, 1.6, 1.0};
+  const double fp = 1 / s.tp;
+  EXPECT_GT(jonswap_shape(s, fp), jonswap_shape(s, 0.99 * fp));
+  EXPECT_GT(jonswap_shape(s, fp), jonswap_shape(s, 1.01 * fp));
+  EXPECT_GT(jonswap_shape(pm, fp), jonswap_shape(pm, 0.99 * fp));
+  EXPECT_GT(jonswap_shape(pm, fp), jonswap_shape(pm, 1.01 * fp));
+  EXPECT_NEAR(jonswap_shape(s, fp) / jonswap_shape(pm, fp), s.gamma, 1e-12 * s.gamma);
+  const std::vector<WaveComponent> c = jonswap_components(s, 0.2, 2.0, 90, 1);
+  std::size_t peak = 0;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (c[i].amplitude > c[peak].amplitude) peak = i;
+  EXPECT_NEAR(c[peak].frequency, fp, 0.02);  // within one spacing (0.02 Hz)
+}
+
+// A seed gives one wave train, another seed another; phases lie in [0, 2 pi).
+TEST(IrregularWaves, SeedFixesThePhases) {
+  const JonswapSpec s{0.1, 1.6};
+  const auto a = jonswap_components(s, 0.2, 2.0, 50, 11);
+  const auto b = jonswap_components(s, 0.2, 2.0, 50, 11);
+  const auto c = jonswap_components(s, 0.2, 2.0, 50, 12);
+  int differ = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].phase, b[i].phase);
+    EXPECT_EQ(a[i].amplitude, c[i].amplitude);
+    EXPECT_GE(a[i].phase, 0.0);
+    EXPECT_LT(a[i].phase, 2 * M_PI);
+    differ += a[i].phase != c[i].phase;
+  }
+  EXPECT_EQ(differ, static_cast<int>(a.size()));
+}
+
+TEST(IrregularWaves, BadSeaStatesAreRefused) {
+  EXPECT_THROW(jonswap_components({0.0, 1.6}, 0.2, 2.0, 50, 1), Error);
+  EXPECT_THROW(jonswap_components({0.1, 0.0}, 0.2, 2.0, 50, 1), Error);
+  EXPECT_THROW(jonswap_components({0.1, 1.6, 0.5}, 0.2, 2.0, 50, 1), Error);
+  EXPECT_THROW(jonswap_components({0.1, 1.6}, 2.0, 0.2, 50, 1), Error);
+  EXPECT_THROW(jonswap_components({0.1, 1.6}, 0.2, 2.0, 0, 1), Error);
+  // No energy in range: far below the peak the shape underflows to zero.
+  EXPECT_THROW(jonswap_components({0.1, 0.01}, 0.1, 1.0, 10, 1), Error);
 }
 
 }  // namespace
