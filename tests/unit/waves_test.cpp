@@ -8,6 +8,7 @@
 #include "netsph/core/error.hpp"
 #include "netsph/waves/dispersion.hpp"
 #include "netsph/waves/irregular_waves.hpp"
+#include "netsph/waves/paddle_motion.hpp"
 #include "netsph/waves/wave_kinematics.hpp"
 #include "netsph/waves/wavemaker_theory.hpp"
 
@@ -283,6 +284,79 @@ TEST(IrregularWaves, BadSeaStatesAreRefused) {
   EXPECT_THROW(jonswap_components({0.1, 1.6}, 0.2, 2.0, 0, 1), Error);
   // No energy in range: far below the peak the shape underflows to zero.
   EXPECT_THROW(jonswap_components({0.1, 0.01}, 0.1, 1.0, 10, 1), Error);
+}
+
+// In shallow water a piston moves the whole water column with the wave: its velocity equals
+// the progressive wave's depth-averaged velocity at the paddle, (H/2) sigma / (kh) cos theta
+// (exact for linear waves), in phase, to the relative O((kh)^4) by which Biesel's H/S differs
+// from kh (H/S = kh (1 - (kh)^4 / 45 + ...)).
+TEST(PaddleMotion, ShallowWaterPistonMovesWithTheWave) {
+  const double h = 0.5, kh = 0.05;
+  RegularWave w;
+  w.depth = h;
+  w.k = kh / h;
+  w.omega = intrinsic_frequency(w.k, h, g);
+  w.height = 0.01;
+  w.phase = 0.4;
+  const PaddleMotion m = regular_paddle_motion(PaddleType::Piston, w, 0.0);
+  ASSERT_EQ(m.harmonics.size(), 1u);
+  for (double t : {0.0, 1.7, 5.2, 11.9}) {
+    double x, v;
+    paddle_state(m, t, x, v);
+    const double u_mean = 0.5 * w.height * w.omega / kh * std::cos(wave_phase(w, 0.0, t));
+    const double scale = 0.5 * w.height * w.omega / kh;
+    EXPECT_NEAR(v, u_mean, std::pow(kh, 4) / 40 * scale + 1e-15) << "t " << t;
+  }
+}
+
+// The velocity is the displacement's derivative, through the ramp and after it (central
+// differences, error O(dt^2)); the paddle starts at rest at X = 0.
+TEST(PaddleMotion, VelocityIsTheDisplacementsRate) {
+  const JonswapSpec sea{0.05, 1.4};
+  const auto components = jonswap_components(sea, 0.3, 2.0, 40, 3);
+  for (PaddleType type : {PaddleType::Piston, PaddleType::Flap}) {
+    const PaddleMotion m = irregular_paddle_motion(type, components, 0.5, 3.0, g);
+    double x0, v0;
+    paddle_state(m, 0.0, x0, v0);
+    EXPECT_EQ(x0, 0.0);
+    EXPECT_EQ(v0, 0.0);
+    double stroke = 0;
+    for (const PaddleHarmonic& hm : m.harmonics) stroke += hm.stroke;
+    const double dt = 1e-5;
+    for (double t : {0.4, 1.5, 2.9, 3.1, 7.3}) {
+      double xa, va, xb, vb, x, v;
+      paddle_state(m, t + dt, xa, va);
+      paddle_state(m, t - dt, xb, vb);
+      paddle_state(m, t, x, v);
+      EXPECT_NEAR((xa - xb) / (2 * dt), v, 1e-6 * stroke * 2 * M_PI * 2.0) << "t " << t;
+    }
+  }
+}
+
+// An irregular sea of one component moves the paddle as the regular wave of that component
+// does; a flap needs a longer stroke than a piston for the same wave.
+TEST(PaddleMotion, OneComponentIsTheRegularWave) {
+  const double h = 0.5;
+  const WaveComponent c{0.8, 0.02, 1.1};
+  RegularWave w;
+  w.depth = h;
+  w.omega = 2 * M_PI * c.frequency;
+  w.k = wave_number(w.omega, h, g);
+  w.height = 2 * c.amplitude;
+  w.phase = c.phase;
+  for (PaddleType type : {PaddleType::Piston, PaddleType::Flap}) {
+    const PaddleMotion a = regular_paddle_motion(type, w, 2.0);
+    const PaddleMotion b = irregular_paddle_motion(type, {c}, h, 2.0, g);
+    for (double t : {0.5, 3.3}) {
+      double xa, va, xb, vb;
+      paddle_state(a, t, xa, va);
+      paddle_state(b, t, xb, vb);
+      EXPECT_NEAR(xa, xb, 1e-14);
+      EXPECT_NEAR(va, vb, 1e-13);
+    }
+  }
+  EXPECT_GT(regular_paddle_motion(PaddleType::Flap, w, 0).harmonics[0].stroke,
+            regular_paddle_motion(PaddleType::Piston, w, 0).harmonics[0].stroke);
 }
 
 }  // namespace
