@@ -10,6 +10,7 @@
 #include "netsph/waves/irregular_waves.hpp"
 #include "netsph/waves/paddle_motion.hpp"
 #include "netsph/waves/wave_kinematics.hpp"
+#include "netsph/waves/wave_record.hpp"
 #include "netsph/waves/wavemaker_theory.hpp"
 
 namespace netsph {
@@ -357,6 +358,53 @@ TEST(PaddleMotion, OneComponentIsTheRegularWave) {
   }
   EXPECT_GT(regular_paddle_motion(PaddleType::Flap, w, 0).harmonics[0].stroke,
             regular_paddle_motion(PaddleType::Piston, w, 0).harmonics[0].stroke);
+}
+
+// A sampled sine about a raised mean: every wave's period is T (the crossings interpolated
+// linearly where the sine is nearly straight: error far below 1e-6 T at 200 samples a
+// period) and its height 2A less at most the sampling loss A (omega dt)^2 / 4; the mean level
+// is found to within A / (samples) (the record holds whole periods plus one sample), and the
+// crests and troughs, measured from it, to that plus their sampling loss A (omega dt)^2 / 8.
+TEST(WaveRecord, ZeroUpcrossingOfASine) {
+  const double T = 1.3, A = 0.02, level = 0.1, dt = T / 200;
+  const double w = 2 * M_PI / T;
+  std::vector<double> t, eta;
+  for (int i = 0; i <= 2000; ++i) {
+    t.push_back(i * dt);
+    eta.push_back(level + A * std::sin(w * t.back() + 0.9));
+  }
+  const WaveRecordSummary s = zero_upcrossing_waves(t, eta);
+  EXPECT_NEAR(s.mean_level, level, A / 2000);
+  ASSERT_GE(s.waves.size(), 9u);
+  const double loss = A * (w * dt) * (w * dt) / 4;
+  for (const RecordWave& r : s.waves) {
+    EXPECT_NEAR(r.period, T, 1e-6 * T);
+    EXPECT_NEAR(r.height(), 2 * A, loss + 1e-12);
+    EXPECT_LE(r.height(), 2 * A + 1e-12);
+  }
+  EXPECT_NEAR(s.mean_period, T, 1e-6 * T);
+  EXPECT_NEAR(s.mean_crest, A, loss / 2 + A / 2000);
+  EXPECT_NEAR(s.mean_trough, A, loss / 2 + A / 2000);
+  EXPECT_NEAR(s.h_third, 2 * A, loss + 1e-12);
+}
+
+// The record before t_from (a ramp, a transient) is left out; a record too short for two
+// up-crossings has no waves.
+TEST(WaveRecord, StartTimeAndShortRecords) {
+  const double T = 1.0, dt = 0.01;
+  std::vector<double> t, eta;
+  for (int i = 0; i <= 1000; ++i) {
+    t.push_back(i * dt);
+    const double a = t.back() < 4 ? 0.2 : 0.02;  // large waves first
+    eta.push_back(a * std::sin(2 * M_PI * t.back() / T));
+  }
+  const WaveRecordSummary late = zero_upcrossing_waves(t, eta, 4.0);
+  ASSERT_FALSE(late.waves.empty());
+  EXPECT_NEAR(late.mean_height, 0.04, 0.001);
+  EXPECT_GT(zero_upcrossing_waves(t, eta).mean_height, 0.05);
+  // 0.9 periods: one up-crossing of the record's mean, no whole wave.
+  const std::vector<double> t3(t.begin(), t.begin() + 90), e3(eta.begin(), eta.begin() + 90);
+  EXPECT_TRUE(zero_upcrossing_waves(t3, e3).waves.empty());
 }
 
 }  // namespace
