@@ -82,19 +82,28 @@ def lex_cmake(text: str, path: str) -> list[Command]:
         line += text.count("\n", pos, end + len(close))
         return end + len(close), content
 
-    while i < n:
-        c = text[i]
+    def skip_blank(pos: int) -> int | None:
+        """The position past the space, newline or comment at pos (counting lines), or None
+        when none starts there."""
+        nonlocal line
+        c = text[pos]
         if c == "\n":
             line += 1
-            i += 1
-        elif c in " \t\r":
-            i += 1
-        elif c == "#":
-            if i + 1 < n and text[i + 1] == "[" and bracket_end(i + 1):
-                i, _ = skip_bracket(i + 1)
-            else:
-                while i < n and text[i] != "\n":
-                    i += 1
+            return pos + 1
+        if c in " \t\r":
+            return pos + 1
+        if c == "#":
+            if pos + 1 < n and text[pos + 1] == "[" and bracket_end(pos + 1):
+                return skip_bracket(pos + 1)[0]
+            while pos < n and text[pos] != "\n":
+                pos += 1
+            return pos
+        return None
+
+    while i < n:
+        c = text[i]
+        if (past := skip_blank(i)) is not None:
+            i = past
         elif c.isalpha() or c == "_":
             m = re.match(r"[A-Za-z_][A-Za-z0-9_]*", text[i:])
             assert m
@@ -112,17 +121,8 @@ def lex_cmake(text: str, path: str) -> list[Command]:
                 if i >= n:
                     raise TableError(f"{path}:{cmd_line}: unterminated call to {name}")
                 c = text[i]
-                if c == "\n":
-                    line += 1
-                    i += 1
-                elif c in " \t\r":
-                    i += 1
-                elif c == "#":
-                    if i + 1 < n and text[i + 1] == "[" and bracket_end(i + 1):
-                        i, _ = skip_bracket(i + 1)
-                    else:
-                        while i < n and text[i] != "\n":
-                            i += 1
+                if (past := skip_blank(i)) is not None:
+                    i = past
                 elif c == "(":
                     depth += 1
                     i += 1
