@@ -26,12 +26,10 @@ void paddle_state(const PaddleMotion& m, double t, double& displacement, double&
     x += a * std::sin(arg);
     v += a * h.omega * std::cos(arg);
   }
-  // X = r(t) x(t): dX/dt = r' x + r x', with r = (1 - cos(pi t / T)) / 2 inside the ramp.
+  // X = r(t) x(t): dX/dt = r' x + r x'.
   const double r = wave_ramp(t, m.ramp);
-  double dr = 0;
-  if (m.ramp > 0 && t > 0 && t < m.ramp) dr = 0.5 * M_PI / m.ramp * std::sin(M_PI * t / m.ramp);
   displacement = r * x;
-  velocity = dr * x + r * v;
+  velocity = wave_ramp_rate(t, m.ramp) * x + r * v;
 }
 
 }  // namespace netsph

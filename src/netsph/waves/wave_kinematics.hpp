@@ -78,4 +78,10 @@ NETSPH_HD double wave_ramp(double t, double ramp) {
   return 0.5 * (1 - std::cos(M_PI * t / ramp));
 }
 
+/// d(wave_ramp)/dt, 1/s: (pi / (2 ramp)) sin(pi t / ramp) inside the ramp, 0 outside.
+NETSPH_HD double wave_ramp_rate(double t, double ramp) {
+  if (!(ramp > 0) || t <= 0 || t >= ramp) return 0;
+  return 0.5 * M_PI / ramp * std::sin(M_PI * t / ramp);
+}
+
 }  // namespace netsph
