@@ -145,6 +145,16 @@ TEST(DeviceParity, HostCoupledNetMatchesTheCpuBackend) {
   expect_parity(compare("net_tethered_knot.toml", {}, 40, StepBackend::HostDevice));
 }
 
+// A wave flume: a piston paddle (a wall whose velocity history [waves] sets), moving at full
+// speed from the first step (no ramp), and a damping zone over the whole tank relaxing every
+// fluid particle's velocity each step.
+const std::vector<std::string> kWaveFlume = {"simulation.dp=0.04", "waves.ramp=0.0",
+                                             "damping.0.from=0.0", "damping.0.rate=20.0"};
+
+TEST(DeviceParity, HostWaveFlumeWithPaddleAndDampingMatchesTheCpuBackend) {
+  expect_parity(compare("waves/regular_piston2d.toml", kWaveFlume, 200, StepBackend::HostDevice));
+}
+
 // The same comparisons with every launch's threads visited in reverse and in shuffled order
 // (and, always, uninitialised device memory as 0xFF bytes: host_exec.hpp), as a GPU runs them
 // in no fixed order: a kernel in which one particle reads what another writes in the same
@@ -511,6 +521,11 @@ TEST(DeviceParity, CudaDfgCylinderMatchesTheCpuBackend) {
 
 // Without a usable device the CUDA run is refused with the reason and the way out, never a
 // crash (CI builds with nvcc and has no GPU).
+TEST(DeviceParity, CudaWaveFlumeWithPaddleAndDampingMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("waves/regular_piston2d.toml", kWaveFlume, 200, StepBackend::Cuda));
+}
+
 TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {
   if (gpu_unavailable().empty()) GTEST_SKIP() << "a CUDA device is present";
   try {

@@ -51,6 +51,9 @@ CaseSpec CaseReader::read(const std::string& default_name) {
   reject_fluid_tables_without_fluid();
   read_current();
   read_probes();
+  read_waves();
+  read_damping();
+  read_gauges();
   // Shifting keeps the particle distribution regular where open boundaries add and remove
   // particles; a closed case does without unless asked.
   if (!shifting_given_ && (!spec_.inlets.empty() || !spec_.outlets.empty())) {
@@ -533,6 +536,7 @@ void CaseReader::read_output() {
   o.series_every = r.number("series_every", NumberRule::non_negative("s"), o.series_every);
   o.checkpoint_every =
       r.number("checkpoint_every", NumberRule::non_negative("s"), o.checkpoint_every);
+  o.gauge_every = r.number("gauge_every", NumberRule::non_negative("s"), o.gauge_every);
   read_force_window(r);
   read_snapshot_region(r);
   // A standalone net run has no particles: no checkpoint (it runs in seconds and starts again

@@ -3,7 +3,8 @@
 // case_reader.cpp (the top-level tables: [simulation], [fluid], [domain], [[fill]], [output]),
 // case_reader_boundaries.cpp
 // ([[wall]], [[inlet]], [[outlet]]), case_reader_bodies.cpp ([[body]]) and
-// case_reader_nets.cpp ([[net]], [current]). Private to the
+// case_reader_nets.cpp ([[net]], [current]), case_reader_probes.cpp ([[probe]]) and
+// case_reader_waves.cpp ([waves], [[damping]], [[gauge]]). Private to the
 // case module (includes toml++).
 #include <array>
 #include <optional>
@@ -44,6 +45,10 @@ void check_increasing(const TomlTableReader& r, std::string_view key, const toml
 /// Quantities derived from several keys (2h, layers * dp): rounded, so that 0.06 is not
 /// printed as 0.060000000000000005.
 std::string format_derived(double v);
+
+/// A damping zone's rate (1/s) when the case leaves it out: the rate that damps the wave of
+/// `w` to 1% over the zone's `length` (m) and back (case_reader_waves.cpp derives it).
+double default_damping_rate(const WaveSpec& w, double length, double g);
 
 /// A name that becomes a file name (a probe's probes/<name>.csv, a net's <name>.xdmf): letters,
 /// digits, '_', '-' and '.', not "." or "..".
@@ -172,6 +177,20 @@ class CaseReader {
   /// A standalone net case (nets, no fluid) with walls, open boundaries or bodies: an error,
   /// not tables silently left out of its run.
   void reject_fluid_tables_without_fluid() const;
+
+  // case_reader_waves.cpp
+  void read_waves();
+  void read_wave_paddle_wall(const TomlTableReader& r, const toml::node& maker);
+  void read_wave_levels(const TomlTableReader& r);
+  void read_wave_train(const TomlTableReader& r);
+  /// Sets the paddle wall's motion and checks that the tank holds its travel.
+  void set_paddle_motion(const TomlTableReader& r);
+  /// No wall's lid over the water below the wave crests.
+  void check_free_surface(const TomlTableReader& r) const;
+  void read_damping();
+  void read_gauges();
+  /// Inside [domain], over a fill, not in a wall's particle layers.
+  void check_gauge_position(const TomlTableReader& r, const GaugeSpec& gauge) const;
 
   struct NamedEntry {
     std::string name;

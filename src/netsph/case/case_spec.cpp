@@ -1,5 +1,6 @@
 #include "netsph/case/case_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -19,13 +20,19 @@ namespace netsph {
 Vec3d VelocityHistory::at(double t) const {
   if (velocities.empty()) return {};
   if (t <= times.front()) return velocities.front();
-  for (std::size_t k = 1; k < times.size(); ++k) {
-    if (t <= times[k]) {
-      const double w = (t - times[k - 1]) / (times[k] - times[k - 1]);
-      return velocities[k - 1] * (1 - w) + velocities[k] * w;
-    }
-  }
-  return velocities.back();
+  // A wavemaker's history holds a hundred points per period: a binary search.
+  const auto after = std::lower_bound(times.begin(), times.end(), t);
+  if (after == times.end()) return velocities.back();
+  const auto k = static_cast<std::size_t>(after - times.begin());
+  const double w = (t - times[k - 1]) / (times[k] - times[k - 1]);
+  return velocities[k - 1] * (1 - w) + velocities[k] * w;
+}
+
+double WaveSpec::reference_wavelength() const {
+  const RegularWave* tallest = nullptr;
+  for (const RegularWave& c : train.components)
+    if (!tallest || c.height > tallest->height) tallest = &c;
+  return tallest ? 2 * M_PI / tallest->k : 0.0;
 }
 
 }  // namespace netsph

@@ -3,6 +3,7 @@
 // filled in, so nothing downstream needs to know about TOML. docs/case-reference.md documents
 // each key; case_reader.cpp is the only code that maps keys to these fields.
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,6 +13,9 @@
 #include "netsph/core/physics_options.hpp"
 #include "netsph/core/quaternion.hpp"
 #include "netsph/core/vec3.hpp"
+#include "netsph/waves/irregular_waves.hpp"
+#include "netsph/waves/paddle_motion.hpp"
+#include "netsph/waves/wave_train.hpp"
 
 namespace netsph {
 
@@ -268,12 +272,86 @@ struct ProbeSpec {
   std::vector<Vec3d> sample_points() const;
 };
 
+/// [waves]: waves made by a piston paddle, a [[wall]] that the reader sets moving (its
+/// `motion` becomes the paddle's velocity, sampled: waves/wave_train.hpp), and the still-water
+/// level that gauges and damping zones refer to. The paddle is a wall with one vertical face in
+/// x: on its xmin face the waves travel in +x, on its xmax face in -x.
+enum class WaveKind : std::uint8_t { Regular, Jonswap };
+inline constexpr std::array kWaveKindNames = {EnumName<WaveKind>{"regular", WaveKind::Regular},
+                                              EnumName<WaveKind>{"jonswap", WaveKind::Jonswap}};
+static_assert(one_to_one(kWaveKindNames));
+constexpr std::string_view name_of(WaveKind v) {
+  return name_of(kWaveKindNames, v);
+}
+/// The theory of a regular wave's target surface: linear (Airy) or Stokes second order.
+enum class WaveTheory : std::uint8_t { Linear, Stokes2 };
+inline constexpr std::array kWaveTheoryNames = {
+    EnumName<WaveTheory>{"linear", WaveTheory::Linear},
+    EnumName<WaveTheory>{"stokes2", WaveTheory::Stokes2}};
+static_assert(one_to_one(kWaveTheoryNames));
+constexpr std::string_view name_of(WaveTheory v) {
+  return name_of(kWaveTheoryNames, v);
+}
+
+struct WaveSpec {
+  bool given = false;
+  WaveKind kind = WaveKind::Regular;
+  PaddleType paddle = PaddleType::Piston;
+  std::string wavemaker;     ///< the name of the [[wall]] that is the paddle
+  std::size_t wall = 0;      ///< its index in CaseSpec::walls
+  double height = 0;         ///< regular: H, m
+  double period = 0;         ///< regular: T, s
+  WaveTheory theory = WaveTheory::Linear;
+  JonswapSpec jonswap;       ///< jonswap: hs, tp, gamma
+  std::uint64_t seed = 1;    ///< jonswap: the random phases' seed
+  int components = 0;        ///< jonswap: how many frequencies
+  double depth = 0;          ///< still-water depth h, m (default: still level - lowest fill)
+  double still_level = 0;    ///< z of the still-water level, m (default: the highest fill top)
+  double ramp = 0;           ///< s (default: two periods)
+  double paddle_x = 0;       ///< x of the paddle's face at rest, m
+  int direction = 1;         ///< +1: the waves travel in +x; -1: in -x
+  WaveTrain train;           ///< the components, set up (derived)
+  double max_excursion = 0;  ///< the paddle's largest excursion from rest over the run, m
+  SourceLocation where;
+
+  /// The period that sets the time scales (ramp, gauge sampling): T or Tp, s.
+  double reference_period() const { return kind == WaveKind::Regular ? period : jonswap.tp; }
+  /// The wavelength of the tallest component, m.
+  double reference_wavelength() const;
+  /// The target elevation above the still-water level at x (m), time t (s): train_elevation
+  /// at the distance from the paddle's rest position along the waves' direction.
+  double target_elevation(double x, double t) const {
+    return train_elevation(train, direction * (x - paddle_x), t);
+  }
+};
+
+/// [[damping]]: a zone where the fluid's velocity is relaxed towards `velocity` (zero, or a
+/// current), graded smoothly along x from nothing at `from` to `rate` at `to` and beyond
+/// (sph/damping_zone.hpp): a numerical beach that absorbs the waves arriving at it.
+struct DampingSpec {
+  std::string name;   ///< default "damping<N>"
+  double from = 0;    ///< x where the damping starts, m
+  double to = 0;      ///< x where it reaches `rate` (beyond: `rate` too), m
+  double rate = 0;    ///< relaxation rate, 1/s
+  Vec3d velocity{};   ///< m/s
+  SourceLocation where;
+};
+
+/// [[gauge]]: a wave gauge, the free-surface elevation at (x, y) over time (run/wave_gauges.hpp).
+struct GaugeSpec {
+  std::string name;  ///< column name in gauges.csv; default "gauge<N>"
+  double x = 0, y = 0;
+  double z_min = 0, z_max = 0;  ///< the vertical line searched for the surface, m (derived)
+  SourceLocation where;
+};
+
 /// [output]
 struct OutputSpec {
   bool snapshots = true;        ///< write HDF5 + XDMF snapshots
   double snapshot_every = 0;    ///< s; 0: end_time / 50
   double series_every = 0;      ///< s; 0: snapshot_every / 10
   double checkpoint_every = 0;  ///< s of simulated time between checkpoints; 0: end_time / 10
+  double gauge_every = 0;       ///< s between rows of gauges.csv; 0: run/wave_gauges.hpp's default
   /// Time window over which summary.json averages body forces and Cd, s; default: the second
   /// half of the run (force_window = [t0, t1]).
   std::optional<std::array<double, 2>> force_window;
@@ -295,6 +373,9 @@ struct CaseSpec {
   std::vector<BodySpec> bodies;
   std::vector<NetSpec> nets;
   std::vector<ProbeSpec> probes;
+  WaveSpec waves;
+  std::vector<DampingSpec> damping;
+  std::vector<GaugeSpec> gauges;
   CurrentSpec current;
   OutputSpec output;
   /// The current's speed when the case has exactly one [[inlet]] with a uniform velocity

@@ -99,6 +99,7 @@ RunOutputs::RunOutputs(const Simulation& sim, std::filesystem::path dir, bool sn
       nets_(sim, window_[0], window_[1]),
       probes_((create_output_folder(dir_, "output folder"), sim), dir_, window_[0], window_[1],
               resume_time(resume)),
+      gauges_(sim, dir_, resume_time(resume)),
       series_(resume
                   ? CsvSeries(dir_ / "series.csv",
                               with_force_columns(series_columns(sim.model().dims), forces_, sim),

@@ -6,6 +6,7 @@
 //   <net>.xdmf, <net>.vtk.series + net_<net>_NNNN.vtk, knots_<net>.csv, profile_<net>.csv
 //                                     coupled nets
 //   probes/<name>.csv, probes/<name>_mean.csv   velocity probes (run/probes.hpp)
+//   gauges.csv                        wave gauges' surface elevations (run/wave_gauges.hpp)
 //   summary.json                      the run as a whole (rewritten atomically, also on failure)
 #include <array>
 #include <filesystem>
@@ -22,6 +23,7 @@
 #include "netsph/run/output_particles.hpp"
 #include "netsph/run/output_schedule.hpp"
 #include "netsph/run/probes.hpp"
+#include "netsph/run/wave_gauges.hpp"
 #include "netsph/solver/simulation.hpp"
 
 namespace netsph {
@@ -45,6 +47,7 @@ class RunOutputs {
     forces_.accumulate(sim);
     nets_.accumulate(sim);
     probes_.after_step(sim, particles);
+    gauges_.after_step(sim, particles);
   }
   /// Body force averages for summary.json (an empty array without bodies).
   nlohmann::json body_summary() const { return forces_.summary(); }
@@ -53,6 +56,8 @@ class RunOutputs {
   /// Probes for summary.json (an empty array without probes).
   nlohmann::json probe_summary() const { return probes_.summary(); }
   const ProbeRecorder& probes() const { return probes_; }
+  /// Wave gauges for summary.json (an empty array without gauges).
+  nlohmann::json gauge_summary() const { return gauges_.summary(); }
 
   /// The outputs' state (intervals, snapshot list, running averages), for a checkpoint.
   void save_state(CheckpointData& c) const;
@@ -78,6 +83,7 @@ class RunOutputs {
   BodyForceRecorder forces_;  // before series_: it adds series columns
   NetRecorder nets_;
   ProbeRecorder probes_;
+  GaugeRecorder gauges_;
   CsvSeries series_;
   std::unique_ptr<CsvSeries> bodies_csv_;
   std::vector<NetVtkSeries> net_vtk_;  // one per coupled net

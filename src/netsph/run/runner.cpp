@@ -167,6 +167,7 @@ nlohmann::json summary_json(const Simulation& sim, const GlobalMeasures& g, cons
   j["bodies"] = outputs.body_summary();
   j["nets"] = outputs.net_summary(sim);
   j["probes"] = outputs.probe_summary();
+  j["gauges"] = outputs.gauge_summary();
   j["warnings"] = r.warnings;
   return j;
 }

@@ -73,6 +73,8 @@ Scene build_scene_part(const CaseSpec& spec, const AxisRange& region,
   add_wall_warnings(spec, scene);
   add_background_pressure_warning(spec, scene);
   add_open_boundary_zones(spec, scene, top_surface);
+  add_damping_zones(spec, scene);
+  check_waves(spec, scene);
 
   ParticleSet& p = scene.particles;
   // The particles near the region too: whether a fluid particle overlaps an earlier one
@@ -149,6 +151,7 @@ Scene Scene::without_particles() const {
   s.domain_min = domain_min, s.domain_max = domain_max;
   s.zones = zones;
   s.bodies = bodies;
+  s.damping = damping;
   s.sources = sources;
   s.removed_overlaps = removed_overlaps;
   s.removed_in_bodies = removed_in_bodies;

@@ -10,6 +10,7 @@
 #include "netsph/case/case_spec.hpp"
 #include "netsph/geometry/box_lattice.hpp"
 #include "netsph/setup/solid_overlaps.hpp"
+#include "netsph/sph/damping_zone.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/particle_set.hpp"
 
@@ -28,6 +29,7 @@ struct Scene {
   Vec3d domain_min{}, domain_max{};
   std::vector<OpenBoundaryZone> zones;  ///< inlets, then outlets (buffer particles' group)
   std::vector<RigidBody> bodies;        ///< body particles' group indexes this
+  std::vector<DampingZone> damping;     ///< [[damping]] zones, in case order
   std::vector<SceneSource> sources;
   // Counts of the particles in the scene (a part's: in its region).
   std::size_t removed_overlaps = 0;   ///< fluid particles dropped for sitting on another particle

@@ -1,8 +1,9 @@
 #pragma once
 // The steps of build_scene_part (scene.cpp), one per thing it builds, in the files named:
 // the fluid's model and fills (scene_fluid.cpp), the open boundaries' zones
-// (scene_zones.cpp), the walls (scene_walls.cpp), the bodies (scene_bodies.cpp) and the domain
-// (scene_domain.cpp). Internal to setup/: other modules call build_scene or build_scene_part.
+// (scene_zones.cpp), the walls (scene_walls.cpp), the bodies (scene_bodies.cpp), the domain
+// (scene_domain.cpp), the damping zones and the wave checks (scene_waves.cpp).
+// Internal to setup/: other modules call build_scene or build_scene_part.
 #include <utility>
 
 #include "netsph/case/case_spec.hpp"
@@ -35,6 +36,13 @@ void add_open_boundary_zones(const CaseSpec& spec, Scene& scene, double top_surf
 void add_wall_warnings(const CaseSpec& spec, Scene& scene);
 /// The walls' particles near `near`, hydrostatic below `top_surface`.
 void add_walls(const CaseSpec& spec, Scene& scene, const AxisRange& near, double top_surface);
+
+/// The damping zones the step applies (scene_waves.cpp).
+void add_damping_zones(const CaseSpec& spec, Scene& scene);
+/// The [waves] checks that need the fluid model: an error for fewer than 20 time steps per
+/// period, warnings for a wave height of fewer than 6 particles and a damping zone shorter
+/// than half a wavelength.
+void check_waves(const CaseSpec& spec, Scene& scene);
 
 /// Sets the scene's domain: the case's (checking that every particle lies in it) or the
 /// default around the whole scene's particles (`whole_bounds` makes one process's bounding

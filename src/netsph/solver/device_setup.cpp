@@ -92,6 +92,7 @@ DeviceSetup device_setup(const CaseSpec& spec, const Scene& scene) {
     s.profile_u.insert(s.profile_u.end(), z.profile_u.begin(), z.profile_u.end());
   }
   s.gz = spec.fluid.gravity.z;
+  s.damping = scene.damping;
   for (const RigidBody& b : scene.bodies) {
     DeviceBody d;
     d.state = b.state;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "netsph/backend/cpu/rates.hpp"
+#include "netsph/sph/damping_zone.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/particle_set.hpp"
 #include "netsph/sph/shifting.hpp"
@@ -44,5 +45,9 @@ double symplectic_predictor(ParticleSet& p, const StageInputs& in, const FluidMo
 std::int64_t symplectic_corrector(ParticleSet& p, const StepStart& s, const StageInputs& in,
                                   const FluidModel& m, const ShiftingSums* shifting = nullptr,
                                   const ShiftingParams* shift_params = nullptr);
+
+/// The damping zones' relaxation of the fluid particles' velocities over a step of dt
+/// (sph/damping_zone.hpp), after the corrector.
+void apply_damping(ParticleSet& p, std::span<const DampingZone> zones, double dt);
 
 }  // namespace netsph

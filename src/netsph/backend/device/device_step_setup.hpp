@@ -9,6 +9,7 @@
 #include "netsph/backend/device/device_types.hpp"
 #include "netsph/neighbours/grid_index.hpp"
 #include "netsph/sph/contact.hpp"
+#include "netsph/sph/damping_zone.hpp"
 #include "netsph/sph/fluid_model.hpp"
 #include "netsph/sph/fluid_point_loads.hpp"
 #include "netsph/sph/fluid_sampler.hpp"
@@ -41,6 +42,7 @@ struct DeviceSetup {
   /// Velocity of wall w at time t (null: every wall is at rest).
   std::function<Vec3f(std::size_t w, double t)> wall_velocity;
   std::vector<DeviceZone> zones;             ///< open boundaries: inlets, then outlets
+  std::vector<DampingZone> damping;          ///< damping zones (sph/damping_zone.hpp)
   std::vector<double> profile_z, profile_u;  ///< the zones' inflow profiles, concatenated
   double gz = 0;                             ///< gravity's z component, m/s^2 (hydrostatic buffers)
   std::vector<DeviceBody> bodies;            ///< by body index, with their initial states

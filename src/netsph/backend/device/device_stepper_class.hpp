@@ -101,6 +101,7 @@ class DeviceStepper {
       Exec::upload(profile_u_, profiles ? s_.profile_u.data() : &none,
                    profiles ? s_.profile_u.size() : 1);
     }
+    if (!s_.damping.empty()) Exec::upload(damping_, s_.damping.data(), s_.damping.size());
     motion_host_.resize(s_.walls.size());
     for (std::size_t w = 0; w < s_.walls.size(); ++w)
       motion_host_[w].shows_own_velocity = s_.walls[w].shows_own_velocity;
@@ -164,6 +165,7 @@ class DeviceStepper {
       advance_bodies(true, dt);
     }
     if (!correct(dt)) rep.status = DeviceStepStatus::NonFinite;
+    if (!s_.damping.empty()) damp(dt);
     place_bodies(false);
     rep.max_speed = max_fluid_speed();
     time_ += dt;
@@ -428,6 +430,9 @@ class DeviceStepper {
   /// Corrector; returns false when a particle's state is not finite.
   bool correct(double dt);
 
+  /// The damping zones' relaxation of the fluid's velocities over the step.
+  void damp(double dt);
+
  private:
   DeviceSetup s_;
   std::size_t n_ = 0;
@@ -449,6 +454,7 @@ class DeviceStepper {
   Buffer<WallKinematics> motion_;
   std::vector<WallKinematics> motion_host_;
   Buffer<DeviceZone> zones_;
+  Buffer<DampingZone> damping_;
   Buffer<ZoneGeometry> zone_geo_;
   Buffer<double> profile_z_, profile_u_;
   Buffer<DeviceBody> bodies_;

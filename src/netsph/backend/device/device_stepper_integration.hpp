@@ -80,4 +80,16 @@ bool DeviceStepper<Exec>::correct(double dt) {
   return !(Exec::max_of(bad, n_) > 0);
 }
 
+template <class Exec>
+void DeviceStepper<Exec>::damp(double dt) {
+  const PhaseTimer<Exec> timer(profile(), DevicePhase::Integration);
+  const DeviceState st = state();
+  const DampingZone* zones = damping_.data();
+  const auto count = static_cast<std::uint32_t>(s_.damping.size());
+  Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
+    if (st.kind[i] != ParticleKind::Fluid) return;
+    for (std::uint32_t z = 0; z < count; ++z) damp_velocity(zones[z], st.pos[i].x, dt, st.vel[i]);
+  });
+}
+
 }  // namespace netsph

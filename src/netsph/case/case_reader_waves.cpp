@@ -1,0 +1,396 @@
+// The [waves], [[damping]] and [[gauge]] tables: the wave a piston paddle makes (the reader
+// sets the paddle wall's motion from it), the zones that absorb waves, and the gauges that
+// measure them. Same conventions as case_reader.cpp; docs/case-reference.md documents every
+// key. The checks here need only the case; those that need the scene (the first time step, the
+// particles per wave height) are setup/wave_checks.cpp's.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "netsph/case/case_reader_impl.hpp"
+#include "netsph/core/error.hpp"
+#include "netsph/waves/dispersion.hpp"
+
+namespace netsph::case_detail {
+namespace {
+
+/// The JONSWAP sea's frequencies span [kJonswapLow, kJonswapHigh] fp: below 0.5 fp the
+/// spectrum holds no energy to speak of (exp(-5/4 * 16) = 2e-9), above 3 fp about 1% of it.
+constexpr double kJonswapLow = 0.5, kJonswapHigh = 3.0;
+
+/// The highest top (surface_z, else the box top) and the lowest bottom of the fills.
+struct FillLevels {
+  double top = -std::numeric_limits<double>::infinity();
+  double bottom = std::numeric_limits<double>::infinity();
+};
+FillLevels fill_levels(const CaseSpec& spec) {
+  FillLevels l;
+  for (const FillSpec& f : spec.fills) {
+    l.top = std::max(l.top, f.surface_z.value_or(f.box.max.z));
+    l.bottom = std::min(l.bottom, f.box.min.z);
+  }
+  return l;
+}
+
+}  // namespace
+
+void CaseReader::read_waves() {
+  const toml::table* table = find_table("waves");
+  if (!table) return;
+  TomlTableReader r(*table, "waves", "[waves]", keys_of("waves"), source_, home_hint);
+  WaveSpec& w = spec_.waves;
+  w.given = true;
+  w.where = r.location();
+  if (spec_.fills.empty()) {
+    r.fail_table("waves need water: this case has no [[fill]] (a standalone net run does not "
+                 "take [waves] yet)");
+  }
+  const Vec3d g = spec_.fluid.gravity;
+  if (!(g.z < 0) || g.x != 0 || g.y != 0) {
+    r.fail_table(fmt::format("waves are gravity waves: they need fluid.gravity = [0, 0, -g] with "
+                             "g > 0, and this case has gravity = {}",
+                             format_vec3(g)));
+  }
+  w.kind = r.choice("type", kWaveKindNames, w.kind);
+  w.paddle = r.choice("paddle", kPaddleTypeNames, w.paddle);
+  if (w.paddle == PaddleType::Flap) {
+    r.fail_value("paddle", *r.find("paddle"),
+                 "a flap paddle rotates about a hinge, and netsph's walls only translate: not "
+                 "supported yet; use paddle = \"piston\"");
+  }
+  const toml::node& maker = r.require("wavemaker", "the name of the [[wall]] that is the paddle");
+  w.wavemaker = r.to_string("wavemaker", maker);
+  read_wave_paddle_wall(r, maker);
+  read_wave_levels(r);
+  read_wave_train(r);
+  set_paddle_motion(r);
+  check_free_surface(r);
+}
+
+void CaseReader::read_wave_paddle_wall(const TomlTableReader& r, const toml::node& maker) {
+  WaveSpec& w = spec_.waves;
+  std::vector<std::string_view> names;
+  const WallSpec* wall = nullptr;
+  for (std::size_t i = 0; i < spec_.walls.size(); ++i) {
+    names.push_back(spec_.walls[i].name);
+    if (spec_.walls[i].name == w.wavemaker) wall = &spec_.walls[i], w.wall = i;
+  }
+  if (!wall) {
+    r.fail_value("wavemaker", maker,
+                 names.empty() ? std::string("names no [[wall]]: this case has none; add a wall "
+                                             "with faces = [\"xmin\"] as the paddle")
+                               : fmt::format("names no [[wall]]{}; the walls are: {}",
+                                             did_you_mean(w.wavemaker, names), join(names)));
+  }
+  int faces = 0;
+  for (const bool f : wall->faces) faces += f ? 1 : 0;
+  if (faces != 1 || !(wall->faces[kXMin] || wall->faces[kXMax])) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("the paddle wall '{}' ({}) must have one face, faces = [\"xmin\"] "
+                             "(waves travel in +x) or [\"xmax\"] (in -x): the whole wall moves "
+                             "with the paddle, so the tank's other faces belong to another wall",
+                             wall->name, wall->where.str()));
+  }
+  if (wall->motion.moving()) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("the paddle wall '{}' ({}) has its own velocity or motion: [waves] "
+                             "sets the paddle's motion, so remove them from the wall",
+                             wall->name, wall->where.str()));
+  }
+  w.direction = wall->faces[kXMin] ? 1 : -1;
+  w.paddle_x = w.direction > 0 ? wall->box.min.x : wall->box.max.x;
+}
+
+void CaseReader::read_wave_levels(const TomlTableReader& r) {
+  WaveSpec& w = spec_.waves;
+  const FillLevels fills = fill_levels(spec_);
+  w.still_level = r.number("still_water_level", NumberRule::any("m"), fills.top);
+  const double depth_default = w.still_level - fills.bottom;
+  w.depth = r.number("depth", NumberRule::positive("m"), depth_default);
+  if (!r.has("depth") && !(w.depth > 0)) {
+    r.fail_value("still_water_level", *r.find("still_water_level"),
+                 fmt::format("lies at or below the lowest fill's bottom, z = {} m: the water "
+                             "would have no depth",
+                             format_number(fills.bottom)));
+  }
+}
+
+void CaseReader::read_wave_train(const TomlTableReader& r) {
+  WaveSpec& w = spec_.waves;
+  const double g = -spec_.fluid.gravity.z;
+  const std::string_view kind = name_of(w.kind);
+  const std::vector<std::string_view> regular_keys = {"height", "period", "theory"};
+  const std::vector<std::string_view> jonswap_keys = {"hs", "tp", "gamma", "seed", "components"};
+  for (const auto& [owner, keys] : {std::pair{WaveKind::Regular, regular_keys},
+                                    std::pair{WaveKind::Jonswap, jonswap_keys}}) {
+    if (owner == w.kind) continue;
+    for (const std::string_view key : keys) {
+      if (const toml::node* node = r.find(key)) {
+        r.fail_value(key, *node,
+                     fmt::format("applies to type = \"{}\" only, and this is type = \"{}\"{}",
+                                 name_of(owner), kind, r.has("type") ? "" : " (the default)"));
+      }
+    }
+  }
+  double height = 0, period = 0;
+  std::string_view height_key = "height";
+  if (w.kind == WaveKind::Regular) {
+    w.height = height = r.required_number("height", NumberRule::positive("m"),
+                                          "the wave height H, crest to trough, m");
+    w.period = period = r.required_number("period", NumberRule::positive("s"),
+                                          "the wave period T, s");
+    w.theory = r.choice("theory", kWaveTheoryNames, w.theory);
+  } else {
+    height_key = "hs";
+    w.jonswap.hs = height = r.required_number("hs", NumberRule::positive("m"),
+                                              "the significant wave height Hm0, m");
+    w.jonswap.tp = period = r.required_number("tp", NumberRule::positive("s"),
+                                              "the peak period Tp, s");
+    w.jonswap.gamma = r.number("gamma", NumberRule::closed(1, 20, ""), w.jonswap.gamma);
+    w.seed = static_cast<std::uint64_t>(
+        r.integer("seed", IntRule{0, std::numeric_limits<std::int64_t>::max()}, 1));
+    // Enough frequencies that the signal does not repeat within the run: it repeats after
+    // 1 / df = components / ((high - low) fp) seconds.
+    const double span = (kJonswapHigh - kJonswapLow) / period;
+    const auto fallback = static_cast<std::int64_t>(
+        std::clamp(std::ceil(1.1 * spec_.simulation.end_time * span), 100.0, 5000.0));
+    w.components = static_cast<int>(r.integer("components", IntRule{10, 20000}, fallback));
+  }
+  w.ramp = r.number("ramp", NumberRule::non_negative("s"), 2 * period);
+  // The breaking limit (Miche 1944) at the wave's (or the sea's peak) wavelength.
+  const double k = wave_number(2 * M_PI / period, w.depth, g);
+  const double wavelength = 2 * M_PI / k, limit = breaking_steepness(k * w.depth);
+  if (height / wavelength > limit) {
+    r.fail_value(height_key, *r.find(height_key),
+                 fmt::format("makes a wave steeper than the breaking limit: H / L = {:.4g} with "
+                             "L = {:.4g} m (T = {} s, depth {} m), and a wave breaks above H / L "
+                             "= 0.142 tanh(kh) = {:.4g} (Miche 1944); the highest that does not "
+                             "break is {:.4g} m",
+                             height / wavelength, wavelength, format_number(period),
+                             format_number(w.depth), limit, limit * wavelength));
+  }
+  if (w.kind == WaveKind::Regular) {
+    w.train = regular_wave_train(w.height, w.period, w.depth,
+                                 w.theory == WaveTheory::Stokes2 ? 2 : 1, w.ramp, g);
+  } else {
+    const double fp = 1 / w.jonswap.tp;
+    w.train = irregular_wave_train(
+        jonswap_components(w.jonswap, kJonswapLow * fp, kJonswapHigh * fp, w.components, w.seed),
+        w.depth, w.ramp, g);
+  }
+}
+
+void CaseReader::set_paddle_motion(const TomlTableReader& r) {
+  WaveSpec& w = spec_.waves;
+  WallSpec& wall = spec_.walls[w.wall];
+  const SampledPaddle s = sample_paddle(train_paddle_motion(w.paddle, w.train),
+                                        spec_.simulation.end_time,
+                                        paddle_sample_interval(w.train));
+  w.max_excursion = s.max_excursion;
+  wall.motion.times = s.times;
+  wall.motion.velocities.clear();
+  for (const double v : s.velocities) wall.motion.velocities.push_back({w.direction * v, 0, 0});
+
+  // The tank must hold the paddle's travel: behind it, its particle layers stay in [domain]
+  // and above a bottom; in front, the water it pushes is longer than its stroke.
+  const double dp = spec_.simulation.dp, e = w.max_excursion;
+  const double back = w.paddle_x - w.direction * (e + wall.layers * dp);
+  const toml::node& maker = *r.find("wavemaker");
+  const std::string what = fmt::format(
+      "the paddle travels {:.4g} m either side of x = {} m over the run (its largest excursion "
+      "from first-order wavemaker theory, stroke {:.4g} m)",
+      e, format_number(w.paddle_x), 2 * e);
+  const DomainSpec& d = spec_.domain;
+  if (d.given && (back < d.min.x || back > d.max.x)) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("{}; its {} particle layers behind it then reach x = {:.4g} m, "
+                             "outside [domain] (x from {} to {} m): widen the domain behind "
+                             "the paddle",
+                             what, wall.layers, back, format_number(d.min.x),
+                             format_number(d.max.x)));
+  }
+  double water = 0;
+  for (const FillSpec& f : spec_.fills) water = std::max(water, f.box.max.x - f.box.min.x);
+  if (2 * e > 0.5 * water) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("{}, more than half the length of the water ({:.4g} m): a tank "
+                             "that short cannot take this wave; lower the height or lengthen "
+                             "the tank",
+                             what, water));
+  }
+  const double reach = w.paddle_x - w.direction * e;
+  bool bottomed = false, any_bottom = false;
+  for (const WallSpec& other : spec_.walls) {
+    if (!other.faces[kZMin]) continue;
+    any_bottom = true;
+    bottomed = bottomed || (w.direction > 0 ? other.box.min.x <= reach + 1e-9 * std::fabs(reach)
+                                            : other.box.max.x >= reach - 1e-9 * std::fabs(reach));
+  }
+  if (any_bottom && !bottomed) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("{}, but no wall's bottom (a zmin face) reaches x = {:.4g} m: the "
+                             "water behind the retreating paddle would fall through; extend the "
+                             "tank's bottom behind the paddle",
+                             what, reach));
+  }
+}
+
+void CaseReader::check_free_surface(const TomlTableReader& r) const {
+  const WaveSpec& w = spec_.waves;
+  const double crest = w.still_level + (w.kind == WaveKind::Regular ? w.height : w.jonswap.hs);
+  for (const WallSpec& wall : spec_.walls) {
+    if (!wall.faces[kZMax] || wall.box.max.z > crest) continue;
+    for (const FillSpec& f : spec_.fills) {
+      if (wall.box.max.x <= f.box.min.x || wall.box.min.x >= f.box.max.x) continue;
+      r.fail_table(fmt::format(
+          "waves need a free surface, and wall '{}' ({}) closes the water with a lid at z = {} "
+          "m, below the wave crests (still level {} m plus the wave height): remove its zmax "
+          "face or raise it",
+          wall.name, wall.where.str(), format_number(wall.box.max.z),
+          format_number(w.still_level)));
+    }
+  }
+}
+
+// ---- [[damping]] ---------------------------------------------------------------------------
+
+void CaseReader::read_damping() {
+  const std::vector<const toml::table*> tables = find_array_of_tables("damping");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const int number = static_cast<int>(i) + 1;
+    const std::string label = fmt::format("damping[{}]", number);
+    TomlTableReader r(*tables[i], label, label, keys_of("damping"), source_, home_hint);
+    DampingSpec z;
+    z.where = r.location();
+    if (spec_.fills.empty()) r.fail_table("a damping zone acts on the SPH fluid, and this case has none");
+    z.name = r.string("name", fmt::format("damping{}", number));
+    z.from = r.required_number("from", NumberRule::any("m"), "x where the damping starts, m");
+    z.to = r.required_number("to", NumberRule::any("m"),
+                             "x where the damping reaches its full rate (and beyond), m");
+    if (z.to == z.from) {
+      r.fail_value("to", *r.find("to"),
+                   "must differ from `from`: the damping grows from `from` to `to` (to > from "
+                   "for waves travelling in +x)");
+    }
+    check_in_domain(r, "from", {z.from, 0, 0});
+    check_in_domain(r, "to", {z.to, 0, 0});
+    z.velocity = read_in_plane_vector(r, "velocity", NumberRule::any("m/s"), {});
+    const double length = std::fabs(z.to - z.from);
+    if (const auto rate = r.optional_number("rate", NumberRule::positive("1/s"))) {
+      z.rate = *rate;
+    } else if (spec_.waves.given) {
+      z.rate = default_damping_rate(spec_.waves, length, -spec_.fluid.gravity.z);
+    } else {
+      r.fail_table(fmt::format("{} needs its rate (1/s): without [waves] there is no wave to "
+                               "derive it from",
+                               label));
+    }
+    spec_.damping.push_back(z);
+  }
+}
+
+double default_damping_rate(const WaveSpec& w, double length, double g) {
+  // The zone relaxes the velocity at rate beta(x) = rate s^2 (s from 0 to 1 across it). A wave
+  // loses energy at rate beta (its kinetic half at 2 beta), so its amplitude decays as
+  // exp(-integral beta / (2 c_g) dx): over the zone and back, after reflection at its end,
+  // exp(-rate L / (3 c_g)). The rate that brings that round trip to 1%: 3 c_g ln(100) / L.
+  const double cg = w.train.front_speed > 0 ? w.train.front_speed : std::sqrt(g * w.depth);
+  return 3 * cg * std::log(100.0) / length;
+}
+
+// ---- [[gauge]] -----------------------------------------------------------------------------
+
+void CaseReader::read_gauges() {
+  const std::vector<const toml::table*> tables = find_array_of_tables("gauge");
+  const FillLevels fills = fill_levels(spec_);
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const int number = static_cast<int>(i) + 1;
+    const std::string label = fmt::format("gauge[{}]", number);
+    TomlTableReader r(*tables[i], label, label, keys_of("gauge"), source_, home_hint);
+    GaugeSpec gauge;
+    gauge.where = r.location();
+    if (spec_.fills.empty()) r.fail_table("a wave gauge measures the SPH fluid, and this case has none");
+    gauge.name = r.string("name", fmt::format("gauge{}", number));
+    if (!plain_file_name(gauge.name)) {
+      r.fail_value("name", *r.find("name"),
+                   "must be a plain name: letters, digits, '_', '-' and '.' (it heads a column "
+                   "of gauges.csv)");
+    }
+    for (const GaugeSpec& other : spec_.gauges) {
+      if (other.name == gauge.name) {
+        r.fail_value("name", *r.find("name"),
+                     fmt::format("is used twice: by {} too; gauge names must be unique (each "
+                                 "heads a column of gauges.csv)",
+                                 other.where.str()));
+      }
+    }
+    gauge.x = r.required_number("x", NumberRule::any("m"), "the gauge's x, m");
+    if (is_2d()) {
+      if (const toml::node* y = r.find("y"))
+        r.fail_value("y", *y, fmt::format("is not allowed {}", kNotIn2D));
+    } else {
+      gauge.y = r.required_number("y", NumberRule::any("m"), "the gauge's y, m");
+    }
+    check_gauge_position(r, gauge);
+    gauge.z_min = fills.bottom;
+    const double above = spec_.waves.given
+                             ? 2 * (spec_.waves.kind == WaveKind::Regular ? spec_.waves.height
+                                                                          : spec_.waves.jonswap.hs)
+                             : 0.5 * (fills.top - fills.bottom);
+    gauge.z_max = spec_.domain.given ? spec_.domain.max.z : fills.top + above;
+    spec_.gauges.push_back(gauge);
+  }
+}
+
+void CaseReader::check_gauge_position(const TomlTableReader& r, const GaugeSpec& gauge) const {
+  const std::string_view key = "x";
+  const Vec3d at{gauge.x, gauge.y, 0};
+  const DomainSpec& d = spec_.domain;
+  if (d.given) {
+    for (const int axis : {0, 1}) {
+      if (axis == 1 && is_2d()) continue;
+      if (at[axis] >= d.min[axis] && at[axis] <= d.max[axis]) continue;
+      const std::string_view k = axis == 0 ? "x" : "y";
+      r.fail_value(k, *r.find(k),
+                   fmt::format("lies outside [domain] ({} from {} to {} m)", k,
+                               format_number(d.min[axis]), format_number(d.max[axis])));
+    }
+  }
+  // In a wall: within the particle layers of one of its vertical faces.
+  const double dp = spec_.simulation.dp;
+  for (const WallSpec& w : spec_.walls) {
+    for (const int axis : {0, 1}) {
+      if (axis == 1 && is_2d()) continue;
+      const int other = 1 - axis;
+      const bool across = is_2d() || (at[other] >= w.box.min[other] && at[other] <= w.box.max[other]);
+      if (!across) continue;
+      const double thick = w.layers * dp;
+      const bool in_min = w.faces[2 * axis] && at[axis] < w.box.min[axis] &&
+                          at[axis] > w.box.min[axis] - thick;
+      const bool in_max = w.faces[2 * axis + 1] && at[axis] > w.box.max[axis] &&
+                          at[axis] < w.box.max[axis] + thick;
+      if (!in_min && !in_max) continue;
+      const std::string_view k = axis == 0 ? "x" : "y";
+      r.fail_value(k, *r.find(k),
+                   fmt::format("lies in wall '{}' ({}): its particle layers span {} from {:.4g} "
+                               "to {:.4g} m; put the gauge in the water",
+                               w.name, w.where.str(), k,
+                               in_min ? w.box.min[axis] - thick : w.box.max[axis],
+                               in_min ? w.box.min[axis] : w.box.max[axis] + thick));
+    }
+  }
+  bool over_water = false;
+  for (const FillSpec& f : spec_.fills) {
+    over_water = over_water || (at.x >= f.box.min.x && at.x <= f.box.max.x &&
+                                (is_2d() || (at.y >= f.box.min.y && at.y <= f.box.max.y)));
+  }
+  if (!over_water) {
+    r.fail_value(key, *r.find(key),
+                 "lies over no [[fill]]: a gauge measures the water below it, and there is none "
+                 "there");
+  }
+}
+
+}  // namespace netsph::case_detail

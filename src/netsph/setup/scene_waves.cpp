@@ -1,0 +1,74 @@
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "netsph/core/error.hpp"
+#include "netsph/setup/scene_builders.hpp"
+#include "netsph/sph/time_step.hpp"
+
+// The waves' part of a scene: the damping zones the step applies, and the checks on [waves]
+// that need the scene's fluid model (its first time step) or its resolution.
+namespace netsph::scene_build {
+
+namespace {
+
+/// A wave period needs this many time steps at least: the paddle's motion and the orbital
+/// velocities then change by under a third of a radian per step.
+constexpr double kMinStepsPerPeriod = 20;
+/// A wave height resolved by fewer particles than this is a warning: below about six, the
+/// surface's kernel smoothing (2h = 3 dp) is as large as the wave and damps it.
+constexpr double kMinParticlesPerHeight = 6;
+
+}  // namespace
+
+void add_damping_zones(const CaseSpec& spec, Scene& scene) {
+  for (const DampingSpec& d : spec.damping)
+    scene.damping.push_back({d.from, d.to, d.rate, Vec3f(d.velocity)});
+}
+
+void check_waves(const CaseSpec& spec, Scene& scene) {
+  const WaveSpec& w = spec.waves;
+  if (!w.given) return;
+  const double dp = spec.simulation.dp;
+  const bool regular = w.kind == WaveKind::Regular;
+  const double height = regular ? w.height : w.jonswap.hs;
+  const double period = w.reference_period();
+  // The first step: the fluid at rest under gravity (force limit) or the acoustic limit.
+  TimeStepInputs at_rest;
+  at_rest.max_acc = norm(spec.fluid.gravity);
+  TimeStepLimits limits = compute_time_step(scene.model, spec.simulation.cfl, at_rest);
+  double dt = limits.dt;
+  if (spec.simulation.dt_max > 0) dt = std::min(dt, spec.simulation.dt_max);
+  // An irregular sea's shortest component matters: its period is Tp / 3.
+  double shortest = period;
+  for (const RegularWave& c : w.train.components) shortest = std::min(shortest, 2 * M_PI / c.omega);
+  if (shortest / dt < kMinStepsPerPeriod) {
+    throw Error(w.where.str(),
+                fmt::format("waves.{} = {:g} s gives {:.3g} time steps per {}period at the first "
+                            "time step, {:.3g} s; the paddle and the waves need at least {:.0f}: "
+                            "lower simulation.dt_max or simulation.cfl, or lengthen the period",
+                            regular ? "period" : "tp", period, shortest / dt,
+                            regular ? "" : "shortest component's ", dt, kMinStepsPerPeriod));
+  }
+  const double per_height = height / dp;
+  if (per_height < kMinParticlesPerHeight) {
+    scene.warnings.push_back(fmt::format(
+        "[waves] ({}): waves.{} = {:g} m, the wave height, is {:.3g} particle spacings (dp = "
+        "{:g} m); below {:.0f} the kernel (2h = {:.3g} dp) smooths the surface over the whole "
+        "wave and damps it: use dp <= {:.3g} m",
+        w.where.str(), regular ? "height" : "hs", height, per_height, dp, kMinParticlesPerHeight,
+        2 * spec.simulation.h_over_dp, height / kMinParticlesPerHeight));
+  }
+  const double wavelength = w.reference_wavelength();
+  for (const DampingSpec& d : spec.damping) {
+    const double length = std::fabs(d.to - d.from);
+    if (length >= 0.5 * wavelength) continue;
+    scene.warnings.push_back(fmt::format(
+        "damping zone '{}' ({}) is {:.3g} m long, under half the wavelength ({:.3g} m): a zone "
+        "that short reflects much of the wave; make it one to two wavelengths long",
+        d.name, d.where.str(), length, wavelength));
+  }
+}
+
+}  // namespace netsph::scene_build

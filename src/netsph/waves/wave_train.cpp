@@ -1,0 +1,93 @@
+#include "netsph/waves/wave_train.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "netsph/waves/dispersion.hpp"
+
+namespace netsph {
+
+namespace {
+
+/// The group velocity of the tallest component.
+double tallest_group_velocity(const std::vector<RegularWave>& components, double g) {
+  const RegularWave* tallest = nullptr;
+  for (const RegularWave& c : components)
+    if (!tallest || c.height > tallest->height) tallest = &c;
+  return tallest ? relative_group_velocity(tallest->k, tallest->depth, g) : 0.0;
+}
+
+}  // namespace
+
+WaveTrain regular_wave_train(double height, double period, double depth, int order, double ramp,
+                             double g) {
+  RegularWave w;
+  w.height = height;
+  w.omega = 2 * M_PI / period;
+  w.k = wave_number(w.omega, depth, g);
+  w.depth = depth;
+  w.order = order;
+  WaveTrain train{{w}, ramp, 0};
+  train.front_speed = tallest_group_velocity(train.components, g);
+  return train;
+}
+
+WaveTrain irregular_wave_train(const std::vector<WaveComponent>& components, double depth,
+                               double ramp, double g) {
+  WaveTrain train;
+  train.ramp = ramp;
+  train.components.reserve(components.size());
+  for (const WaveComponent& c : components) {
+    RegularWave w;
+    w.height = 2 * c.amplitude;
+    w.omega = 2 * M_PI * c.frequency;
+    w.k = wave_number(w.omega, depth, g);
+    w.depth = depth;
+    w.phase = c.phase;
+    train.components.push_back(w);
+  }
+  train.front_speed = tallest_group_velocity(train.components, g);
+  return train;
+}
+
+PaddleMotion train_paddle_motion(PaddleType type, const WaveTrain& train) {
+  PaddleMotion m;
+  m.ramp = train.ramp;
+  m.harmonics.reserve(train.components.size());
+  for (const RegularWave& w : train.components)
+    m.harmonics.push_back(regular_paddle_motion(type, w, train.ramp).harmonics.front());
+  return m;
+}
+
+double train_elevation(const WaveTrain& train, double distance, double t) {
+  const double arrival = train.front_speed > 0 ? distance / train.front_speed : 0.0;
+  const double ramp = wave_ramp(t - arrival, train.ramp);
+  if (!(ramp > 0)) return 0;
+  double eta = 0;
+  for (const RegularWave& w : train.components) eta += wave_elevation(w, distance, t);
+  return ramp * eta;
+}
+
+SampledPaddle sample_paddle(const PaddleMotion& m, double end_time, double interval) {
+  SampledPaddle s;
+  const auto n = static_cast<std::size_t>(std::ceil(end_time / interval)) + 1;
+  s.times.reserve(n + 1);
+  s.velocities.reserve(n + 1);
+  for (std::size_t i = 0; i <= n; ++i) {
+    const double t = static_cast<double>(i) * interval;
+    double x = 0, v = 0;
+    paddle_state(m, t, x, v);
+    s.times.push_back(t);
+    s.velocities.push_back(v);
+    s.max_excursion = std::max(s.max_excursion, std::fabs(x));
+  }
+  return s;
+}
+
+double paddle_sample_interval(const WaveTrain& train) {
+  double fastest = 0;
+  for (const RegularWave& w : train.components) fastest = std::max(fastest, w.omega);
+  return fastest > 0 ? 2 * M_PI / fastest / 100 : 0.0;
+}
+
+}  // namespace netsph

@@ -1,0 +1,192 @@
+// A case's [waves], [[damping]] and [[gauge]] tables turned into what the run uses: the paddle
+// wall's motion (against first-order wavemaker theory), the damping zones' grading and
+// relaxation, the gauges' surface from a coverage profile, and the set-up's checks that need
+// the fluid model. The reader's messages for bad input: tests/cases/bad/{waves,gauge,damping}_*.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "netsph/case/case_reader.hpp"
+#include "netsph/core/error.hpp"
+#include "netsph/run/wave_gauges.hpp"
+#include "netsph/setup/scene.hpp"
+#include "netsph/sph/damping_zone.hpp"
+#include "netsph/waves/dispersion.hpp"
+#include "netsph/waves/wave_train.hpp"
+
+namespace netsph {
+namespace {
+
+CaseSpec flume(const std::vector<std::string>& overrides = {}) {
+  return read_case_file(std::string(NETSPH_CASES_DIR) + "/waves/regular_piston2d.toml",
+                        overrides);
+}
+
+const WallSpec& paddle_of(const CaseSpec& spec) {
+  return spec.walls.at(spec.waves.wall);
+}
+
+/// The paddle's displacement at t from its velocity history (trapezoid rule: exact for the
+/// piecewise-linear velocity the wall follows, as the step's wall update is).
+double displacement_from_history(const VelocityHistory& h, double t) {
+  double x = 0;
+  for (std::size_t k = 1; k < h.times.size() && h.times[k - 1] < t; ++k) {
+    const double t1 = std::min(h.times[k], t);
+    const Vec3d v1 = h.at(t1);
+    x += 0.5 * (h.velocities[k - 1].x + v1.x) * (t1 - h.times[k - 1]);
+  }
+  return x;
+}
+
+TEST(WavesCase, PaddleWallFollowsFirstOrderWavemakerTheory) {
+  const CaseSpec spec = flume();
+  const WaveSpec& w = spec.waves;
+  ASSERT_TRUE(w.given);
+  EXPECT_EQ(paddle_of(spec).name, "paddle");
+  EXPECT_EQ(w.direction, 1);
+  EXPECT_DOUBLE_EQ(w.depth, 0.5);
+  EXPECT_DOUBLE_EQ(w.still_level, 0.5);
+  EXPECT_DOUBLE_EQ(w.ramp, 2 * w.period);
+  // The stroke the Biesel transfer function gives for H at this kh.
+  const double k = wave_number(2 * M_PI / w.period, w.depth);
+  const double stroke = w.height / piston_height_to_stroke(k * w.depth);
+  const PaddleMotion m = train_paddle_motion(PaddleType::Piston, w.train);
+  ASSERT_EQ(m.harmonics.size(), 1u);
+  EXPECT_NEAR(m.harmonics[0].stroke, stroke, 1e-12 * stroke);
+  // The sampled velocity integrates to the paddle's displacement: the trapezoid rule's error
+  // on a sinusoid sampled 100 times a period is (2 pi / 100)^2 / 12 = 3.3e-4 of its amplitude
+  // per unit phase, so over a period (2 pi) under 2.1e-3 of S/2; bounded here by 1% of S/2
+  // over the whole run (the error alternates in sign over each period).
+  const VelocityHistory& h = paddle_of(spec).motion;
+  double worst = 0;
+  for (double t = 0; t <= spec.simulation.end_time; t += 0.0371) {
+    double x = 0, v = 0;
+    paddle_state(m, t, x, v);
+    worst = std::max(worst, std::fabs(displacement_from_history(h, t) - x));
+    EXPECT_NEAR(h.at(t).x, v, 1e-3 * stroke * m.harmonics[0].omega) << "t = " << t;
+    EXPECT_EQ(h.at(t).z, 0.0);
+  }
+  EXPECT_LT(worst, 0.01 * stroke / 2);
+  EXPECT_NEAR(w.max_excursion, stroke / 2, 1e-3 * stroke);
+}
+
+TEST(WavesCase, PaddleOnAnXmaxFaceSendsTheWavesTowardsMinusX) {
+  const CaseSpec spec = flume({"wall.1.faces=[\"xmax\"]", "wall.1.min=[-0.3, 0, 0]",
+                               "wall.1.max=[5.9, 0, 0.9]", "wall.0.faces=[\"zmin\", \"xmin\"]",
+                               "wall.0.min=[0, 0, 0]", "wall.0.max=[6.05, 0, 0.9]",
+                               "fill.0.max=[5.9, 0, 0.5]", "damping.0.from=2.4",
+                               "damping.0.to=0.0"});
+  EXPECT_EQ(spec.waves.direction, -1);
+  EXPECT_DOUBLE_EQ(spec.waves.paddle_x, 5.9);
+  // The paddle moves in -x when the wave's crest leaves it (the velocity in phase with eta).
+  const VelocityHistory& h = paddle_of(spec).motion;
+  const double t = spec.waves.ramp + spec.waves.period;  // eta at the paddle at its crest
+  EXPECT_LT(h.at(t).x, 0.0);
+  EXPECT_GT(spec.waves.target_elevation(5.9, t), 0.0);
+}
+
+TEST(WavesCase, DampingRateDefaultsToARoundTripOfOnePercent) {
+  const CaseSpec spec = flume();
+  ASSERT_EQ(spec.damping.size(), 1u);
+  const DampingSpec& d = spec.damping[0];
+  const double k = spec.waves.train.components[0].k;
+  const double cg = relative_group_velocity(k, spec.waves.depth);
+  EXPECT_NEAR(d.rate, 3 * cg * std::log(100.0) / (d.to - d.from), 1e-12 * d.rate);
+  // The amplitude's decay over the zone and back at that rate, integrated numerically:
+  // exp(-integral of beta / (2 c_g) over 2 L) must be 1%.
+  const DampingZone z{d.from, d.to, d.rate, {}};
+  double integral = 0;
+  const int n = 10000;
+  for (int i = 0; i < n; ++i) {
+    const double x = d.from + (i + 0.5) * (d.to - d.from) / n;
+    integral += damping_rate(z, x) * (d.to - d.from) / n;
+  }
+  EXPECT_NEAR(std::exp(-2 * integral / (2 * cg)), 0.01, 1e-6);
+}
+
+TEST(DampingZone, GradesQuadraticallyAndRelaxesExactly) {
+  const DampingZone z{2.0, 4.0, 10.0, {0.2f, 0.0f, 0.0f}};
+  EXPECT_EQ(damping_rate(z, 1.9), 0.0);
+  EXPECT_EQ(damping_rate(z, 2.0), 0.0);
+  EXPECT_NEAR(damping_rate(z, 3.0), 2.5, 1e-12);
+  EXPECT_EQ(damping_rate(z, 4.0), 10.0);
+  EXPECT_EQ(damping_rate(z, 9.0), 10.0);
+  // Facing -x: from > to.
+  const DampingZone back{4.0, 2.0, 10.0, {}};
+  EXPECT_NEAR(damping_rate(back, 3.0), 2.5, 1e-12);
+  EXPECT_EQ(damping_rate(back, 4.5), 0.0);
+  // Two steps of dt relax as one of 2 dt (the exact exponential, any dt).
+  Vec3f a{1.0f, 0.0f, -0.5f}, b = a;
+  damp_velocity(z, 3.0, 0.1, a);
+  damp_velocity(z, 3.0, 0.1, a);
+  damp_velocity(z, 3.0, 0.2, b);
+  EXPECT_NEAR(a.x, b.x, 1e-6);
+  EXPECT_NEAR(a.x, 0.2 + 0.8 * std::exp(-2.5 * 0.2), 1e-6);
+  EXPECT_NEAR(a.z, -0.5 * std::exp(-2.5 * 0.2), 1e-6);
+  Vec3f outside{1.0f, 0.0f, 0.0f};
+  damp_velocity(z, 1.0, 0.1, outside);
+  EXPECT_EQ(outside.x, 1.0f);
+}
+
+TEST(WaveGauge, SurfaceIsWhereTheCoverageCrossesOneHalf) {
+  std::vector<double> z, c;
+  for (int k = 0; k <= 40; ++k) {
+    z.push_back(0.01 * k);
+    // Water to 0.2 m, a linear fall over a kernel's width around it, spray above.
+    const double s = 0.5 - (z.back() - 0.2) / 0.03;
+    c.push_back(std::clamp(s, 0.0, 1.0));
+  }
+  c[35] = 0.3;  // a drop: below one half, not a surface
+  EXPECT_NEAR(surface_from_coverage(z, c), 0.2, 1e-12);
+  // A bottom wall's half-empty kernel near z = 0 does not count: the highest crossing does.
+  c[0] = 0.45;
+  EXPECT_NEAR(surface_from_coverage(z, c), 0.2, 1e-12);
+  EXPECT_TRUE(std::isnan(surface_from_coverage(z, std::vector<double>(z.size(), 0.1))));
+  // Water up to the line's top: the top.
+  EXPECT_EQ(surface_from_coverage(z, std::vector<double>(z.size(), 1.0)), z.back());
+}
+
+TEST(WaveGauge, TargetIsTheLinearWaveOnceTheRampHasArrived) {
+  const CaseSpec spec = flume();
+  const WaveSpec& w = spec.waves;
+  const RegularWave& c = w.train.components[0];
+  const double x = 2.094, arrival = x / w.train.front_speed;
+  EXPECT_EQ(w.target_elevation(x, 0.5 * arrival), 0.0);
+  const double t = arrival + w.ramp + 0.3;
+  EXPECT_NEAR(w.target_elevation(x, t), wave_elevation(c, x, t), 1e-15);
+  EXPECT_GT(gauge_interval(spec), 0.0);
+  EXPECT_LE(gauge_interval(spec), w.period / 40);
+}
+
+TEST(WavesSetup, TooFewStepsPerPeriodStopsTheRun) {
+  // A 2 ms period: the first time step at dp = 0.02 m is cfl h / c0 = 0.2 * 0.03 / 22 =
+  // 2.7e-4 s (the acoustic limit), so only 7 steps fit in a period.
+  const CaseSpec spec = flume({"waves.period=0.002", "waves.height=1e-7", "simulation.dp=0.02"});
+  try {
+    build_scene(spec);
+    FAIL() << "a 2 ms period was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("time steps per period"), std::string::npos) << e.what();
+    EXPECT_NE(e.where().find("regular_piston2d.toml"), std::string::npos) << e.where();
+  }
+}
+
+TEST(WavesSetup, WarnsOfACoarseWaveAndAShortDampingZone) {
+  const CaseSpec spec = flume({"simulation.dp=0.02", "damping.0.from=5.2"});
+  const Scene scene = build_scene(spec);
+  bool coarse = false, short_zone = false;
+  for (const std::string& w : scene.warnings) {
+    coarse |= w.find("is 3 particle spacings") != std::string::npos;
+    short_zone |= w.find("damping zone 'beach'") != std::string::npos &&
+                  w.find("under half the wavelength") != std::string::npos;
+  }
+  EXPECT_TRUE(coarse);
+  EXPECT_TRUE(short_zone);
+  ASSERT_EQ(scene.damping.size(), 1u);
+  EXPECT_EQ(scene.damping[0].from, 5.2);
+}
+
+}  // namespace
+}  // namespace netsph
