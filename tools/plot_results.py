@@ -12,6 +12,8 @@ writes into DIR/plots/:
   probe_<name>.png          line probes: mean u_x / U along the line (the paper's Figures 13,
                             19, 24); plane probes: contours of the mean speed (Figures 17, 18,
                             22, 23), with the nets' final knots drawn in
+  gauges.png                wave gauges: the surface elevation at each gauge over time, with
+                            the target wave ([waves]) and the summary's window shaded
   time_step.png             dt and the fluid particle count over time
 Every axis carries its unit; colour maps are perceptually uniform (viridis, cividis).
 Run with Debian's Python (/usr/bin/python3): it needs python3-matplotlib and python3-numpy.
@@ -261,6 +263,34 @@ def plot_probes(folder, summary, case, out):
     return written
 
 
+def plot_gauges(folder, summary, case, out):
+    gauges = summary.get("gauges", [])
+    path = os.path.join(folder, "gauges.csv")
+    if not gauges or not os.path.exists(path):
+        return []
+    d, _ = read_csv(path)
+    t = d["time"]
+    fig, axes = plt.subplots(len(gauges), 1, figsize=(10, 1.9 * len(gauges) + 0.8), sharex=True,
+                             squeeze=False)
+    for ax, g in zip(axes[:, 0], gauges):
+        name = g["name"]
+        window = g.get("window_s")
+        if window:
+            ax.axvspan(window[0], window[1], color="0.92", lw=0)
+        if f"{name}_target" in d:
+            ax.plot(t, d[f"{name}_target"], color="0.45", lw=1.0, ls="--", label="target")
+        ax.plot(t, d[name], color="#1f4e79", lw=1.1, label="measured")
+        ratio = g.get("height_ratio")
+        note = f", H / H_target = {ratio:.3f}" if ratio is not None else ""
+        ax.set_title(f"gauge '{name}' at x = {g['x_m']:.3g} m{note}", fontsize=9, loc="left")
+        ax.set_ylabel("η [m]")
+        ax.axhline(0.0, color="0.7", lw=0.6)
+    axes[0, 0].legend(loc="upper left", fontsize=8, ncol=2)
+    axes[-1, 0].set_xlabel("time [s]")
+    fig.suptitle(f"{case}: surface elevation (window of the summary shaded)")
+    return [save(fig, out, "gauges.png")]
+
+
 def main(argv):
     if len(argv) not in (2, 3):
         print("usage: plot_results.py RUN_FOLDER [TIMES]  (TIMES: net shapes at t1,t2,... s)",
@@ -286,6 +316,7 @@ def main(argv):
         written += plot_time_step(series, case, out)
         written += plot_net_shapes(folder, summary, case, out, times)
         written += plot_probes(folder, summary, case, out)
+        written += plot_gauges(folder, summary, case, out)
     elif summary.get("mode") == "standalone net" and os.path.exists(series_path):
         # A standalone net run (no fluid): nets in a current, no particles.
         series, _ = read_csv(series_path)

@@ -62,7 +62,8 @@ TEST(WaveFlume, PistonMakesTheTargetWaveOneWavelengthDownTheFlume) {
   std::getline(csv, header);
   EXPECT_EQ(header,
             "time [s],half_L [m],half_L_target [m],one_L [m],one_L_target [m],one_and_half_L "
-            "[m],one_and_half_L_target [m]");
+            "[m],one_and_half_L_target [m],refl_1 [m],refl_1_target [m],refl_2 [m],refl_2_target "
+            "[m],refl_3 [m],refl_3_target [m]");
 }
 
 }  // namespace

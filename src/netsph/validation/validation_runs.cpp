@@ -435,6 +435,41 @@ std::vector<ValidationRow> table2_reduced(const ValidationContext& ctx) {
   return rows;
 }
 
+// ---- beyond the paper: waves (issue 44) ----------------------------------------------------
+
+/// The regular-wave flume (cases/waves/regular_piston2d.toml) at two resolutions: the gauges'
+/// wave height and period against first-order wavemaker theory (the 'paper' column holds the
+/// theory's target: there is no paper figure), and the height's loss along the flume.
+std::vector<ValidationRow> waves_regular(const ValidationContext& ctx) {
+  std::vector<ValidationRow> rows;
+  for (const double dp : {0.02, 0.01}) {
+    const nlohmann::json s =
+        ctx.run_case("waves/regular_piston2d",
+                     {fmt::format("simulation.dp={}", dp), "output.snapshots=false"},
+                     fmt::format("dp{:.0f}mm", dp * 1000));
+    const std::string note = fmt::format(
+        "kh = 1.5, H/L = 0.029, dp = {} mm ({:.0f} particles per H), zero up-crossing over "
+        "5.5-10.5 s; 'paper' = first-order wavemaker theory",
+        dp * 1000, 0.06 / dp);
+    for (const char* gauge : {"half_L", "one_L", "one_and_half_L"}) {
+      const nlohmann::json& g = named(s, "gauges", gauge);
+      rows.push_back(row("waves_regular", fmt::format("wave height at gauge {}", gauge), "m",
+                         g.at("measured").at("mean_height_m").get<double>(),
+                         g.at("target").at("mean_height_m").get<double>(), {}, note));
+    }
+    const nlohmann::json& one = named(s, "gauges", "one_L");
+    rows.push_back(row("waves_regular", "wave period at gauge one_L", "s",
+                       one.at("measured").at("mean_period_s").get<double>(),
+                       one.at("target").at("mean_period_s").get<double>(), {}, note));
+    const double h1 = one.at("measured").at("mean_height_m").get<double>();
+    const double h15 =
+        named(s, "gauges", "one_and_half_L").at("measured").at("mean_height_m").get<double>();
+    rows.push_back(row("waves_regular", "height loss from one_L to one_and_half_L", "",
+                       1 - h15 / h1, {}, {}, note + " (theory: none)"));
+  }
+  return rows;
+}
+
 }  // namespace
 
 const std::vector<ValidationEntry>& validation_entries() {
@@ -457,6 +492,8 @@ const std::vector<ValidationEntry>& validation_entries() {
        rigid_speeds},
       {"table2_reduced", "3.1.1", "Table 2 elements at 0.41 and 1.01 m/s, reduced", false, 270,
        table2_reduced},
+      {"waves_regular", "(waves)", "piston wavemaker, regular waves at kh = 1.5, 2D flume", false,
+       17, waves_regular},
   };
   return entries;
 }
