@@ -261,12 +261,14 @@ int report_run(const RunReport& r, const std::filesystem::path& out, bool plots)
   spdlog::info(
       "{}: t = {:.6g} s in {} steps, {:.1f} s wall, {:.3g} particle-steps/s, {:.0f} B/particle",
       r.status, r.sim_time, r.steps, r.wall_s, r.particle_steps_per_s, r.bytes_per_particle);
+  const bool gauges = !r.summary.value("gauges", nlohmann::json::array()).empty();
   if (r.snapshots > 0) {
-    spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, summary.json",
-                 r.snapshots, std::filesystem::absolute(out).string());
+    spdlog::info("outputs: {} snapshot(s) in {}/particles.xdmf, series.csv, {}summary.json",
+                 r.snapshots, std::filesystem::absolute(out).string(),
+                 gauges ? "gauges.csv, " : "");
   } else {
-    spdlog::info("outputs: series.csv, summary.json in {} (no particle snapshots)",
-                 std::filesystem::absolute(out).string());
+    spdlog::info("outputs: series.csv, {}summary.json in {} (no particle snapshots)",
+                 gauges ? "gauges.csv, " : "", std::filesystem::absolute(out).string());
   }
   if (plots) make_plots(out);  // also after a failure: the plots show what went wrong
   if (r.checkpoint_time >= 0 && r.status != "completed") {

@@ -82,6 +82,26 @@ void log_run_results(const nlohmann::json& summary) {
           p["mean_file"].get<std::string>());
     }
   }
+  for (const auto& g : summary.value("gauges", nlohmann::json::array())) {
+    const nlohmann::json& m = g["measured"];
+    const auto& window = g["window_s"];
+    if (m["waves"].get<int>() == 0) {
+      spdlog::info("gauge {} over {:.4g}-{:.4g} s: {}", g["name"].get<std::string>(),
+                   window[0].get<double>(), window[1].get<double>(),
+                   g.value("note", std::string("no complete wave")));
+      continue;
+    }
+    std::string target;
+    if (g.contains("height_ratio")) {
+      target = fmt::format(" ({:.3f} and {:.4f} of the target)", g["height_ratio"].get<double>(),
+                           g["period_ratio"].get<double>());
+    }
+    spdlog::info("gauge {} over {:.4g}-{:.4g} s: {} waves, mean height {:.4g} m, mean period "
+                 "{:.4g} s{}",
+                 g["name"].get<std::string>(), window[0].get<double>(), window[1].get<double>(),
+                 m["waves"].get<int>(), m["mean_height_m"].get<double>(),
+                 m["mean_period_s"].get<double>(), target);
+  }
 }
 
 }  // namespace netsph::app

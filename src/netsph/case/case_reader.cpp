@@ -537,16 +537,21 @@ void CaseReader::read_output() {
   o.checkpoint_every =
       r.number("checkpoint_every", NumberRule::non_negative("s"), o.checkpoint_every);
   o.gauge_every = r.number("gauge_every", NumberRule::non_negative("s"), o.gauge_every);
+  if (o.gauge_every > spec_.simulation.end_time) {
+    r.fail_value("gauge_every", *r.find("gauge_every"),
+                 fmt::format("must be <= simulation.end_time ({} s), or 0 for automatic",
+                             format_number(spec_.simulation.end_time)));
+  }
   read_force_window(r);
   read_snapshot_region(r);
   // A standalone net run has no particles: no checkpoint (it runs in seconds and starts again
   // as fast) and no particle snapshots to cut down. Said rather than ignored.
   if (spec_.net_only()) {
-    for (const std::string_view key : {"checkpoint_every", "snapshot_region"}) {
+    for (const std::string_view key : {"checkpoint_every", "snapshot_region", "gauge_every"}) {
       if (const toml::node* node = r.find(key)) {
         r.fail_value(key, *node,
                      "does not apply to a standalone net case (no fluid, no particles): it "
-                     "writes no checkpoint and no particle snapshots; remove the key");
+                     "writes no checkpoint, no particle snapshots and no gauges; remove the key");
       }
     }
   }

@@ -181,7 +181,10 @@ class CaseReader {
   // case_reader_waves.cpp
   void read_waves();
   void read_wave_paddle_wall(const TomlTableReader& r, const toml::node& maker);
-  void read_wave_levels(const TomlTableReader& r);
+  /// The still-water level and depth from the fill in front of the paddle.
+  void read_wave_levels(const TomlTableReader& r, const toml::node& maker);
+  /// The paddle spans the water's depth (and, in 3D, its width).
+  void check_paddle_geometry(const TomlTableReader& r, const toml::node& maker) const;
   void read_wave_train(const TomlTableReader& r);
   /// Sets the paddle wall's motion and checks that the tank holds its travel.
   void set_paddle_motion(const TomlTableReader& r);
@@ -189,8 +192,11 @@ class CaseReader {
   void check_free_surface(const TomlTableReader& r) const;
   void read_damping();
   void read_gauges();
-  /// Inside [domain], over a fill, not in a wall's particle layers.
+  /// Inside [domain], over a fill, clear of the walls' particle layers and kernels and of the
+  /// paddle's travel.
   void check_gauge_position(const TomlTableReader& r, const GaugeSpec& gauge) const;
+  /// No damping zone reaches the paddle.
+  void check_damping_clear_of_paddle(const TomlTableReader& r, const DampingSpec& zone) const;
 
   struct NamedEntry {
     std::string name;

@@ -4,6 +4,7 @@
 // key. The checks here need only the case; those that need the scene (the first time step, the
 // particles per wave height) are setup/wave_checks.cpp's.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -19,6 +20,10 @@ namespace {
 /// The JONSWAP sea's frequencies span [kJonswapLow, kJonswapHigh] fp: below 0.5 fp the
 /// spectrum holds no energy to speak of (exp(-5/4 * 16) = 2e-9), above 3 fp about 1% of it.
 constexpr double kJonswapLow = 0.5, kJonswapHigh = 3.0;
+
+/// The paddle's velocity table: at most this many samples (32 B each), and this many
+/// sample-components of work to fill it (a few seconds).
+constexpr double kMaxPaddleSamples = 5e6, kMaxPaddleWork = 5e9;
 
 /// The highest top (surface_z, else the box top) and the lowest bottom of the fills.
 struct FillLevels {
@@ -60,11 +65,20 @@ void CaseReader::read_waves() {
                  "a flap paddle rotates about a hinge, and netsph's walls only translate: not "
                  "supported yet; use paddle = \"piston\"");
   }
+  if (!spec_.inlets.empty() || !spec_.outlets.empty()) {
+    const OpenBoundarySpec& ob = spec_.inlets.empty() ? spec_.outlets[0] : spec_.inlets[0];
+    r.fail_table(fmt::format(
+        "a wave flume with open boundaries is not supported yet: '{}' ({}) is an {}; waves "
+        "generated at an inlet (waves on a current) are planned, a paddle needs a closed tank "
+        "with a damping zone before its far wall",
+        ob.name, ob.where.str(), spec_.inlets.empty() ? "outlet" : "inlet"));
+  }
   const toml::node& maker = r.require("wavemaker", "the name of the [[wall]] that is the paddle");
   w.wavemaker = r.to_string("wavemaker", maker);
   read_wave_paddle_wall(r, maker);
-  read_wave_levels(r);
+  read_wave_levels(r, maker);
   read_wave_train(r);
+  check_paddle_geometry(r, maker);
   set_paddle_motion(r);
   check_free_surface(r);
 }
@@ -78,6 +92,13 @@ void CaseReader::read_wave_paddle_wall(const TomlTableReader& r, const toml::nod
     if (spec_.walls[i].name == w.wavemaker) wall = &spec_.walls[i], w.wall = i;
   }
   if (!wall) {
+    for (const NamedEntry& other : names_) {
+      if (other.name != w.wavemaker) continue;
+      r.fail_value("wavemaker", maker,
+                   fmt::format("names {} ({}), not a [[wall]]: the paddle is a wall with one x "
+                               "face; the walls are: {}",
+                               other.label, other.where.str(), join(names)));
+    }
     r.fail_value("wavemaker", maker,
                  names.empty() ? std::string("names no [[wall]]: this case has none; add a wall "
                                              "with faces = [\"xmin\"] as the paddle")
@@ -103,17 +124,68 @@ void CaseReader::read_wave_paddle_wall(const TomlTableReader& r, const toml::nod
   w.paddle_x = w.direction > 0 ? wall->box.min.x : wall->box.max.x;
 }
 
-void CaseReader::read_wave_levels(const TomlTableReader& r) {
+void CaseReader::read_wave_levels(const TomlTableReader& r, const toml::node& maker) {
   WaveSpec& w = spec_.waves;
-  const FillLevels fills = fill_levels(spec_);
-  w.still_level = r.number("still_water_level", NumberRule::any("m"), fills.top);
-  const double depth_default = w.still_level - fills.bottom;
-  w.depth = r.number("depth", NumberRule::positive("m"), depth_default);
-  if (!r.has("depth") && !(w.depth > 0)) {
-    r.fail_value("still_water_level", *r.find("still_water_level"),
-                 fmt::format("lies at or below the lowest fill's bottom, z = {} m: the water "
-                             "would have no depth",
-                             format_number(fills.bottom)));
+  const double dp = spec_.simulation.dp;
+  // The water the paddle pushes: the fill just in front of its face.
+  const double front = w.paddle_x + w.direction * 0.5 * dp;
+  const FillSpec* water = nullptr;
+  for (const FillSpec& f : spec_.fills) {
+    if (front >= f.box.min.x && front <= f.box.max.x) water = &f;
+  }
+  if (!water) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("the paddle's face is at x = {} m (its wall's {} face), and no "
+                             "[[fill]] lies in front of it: put the water against the paddle",
+                             format_number(w.paddle_x), w.direction > 0 ? "xmin" : "xmax"));
+  }
+  w.still_level = water->surface_z.value_or(water->box.max.z);
+  w.depth = w.still_level - water->box.min.z;
+  if (!(w.depth > 0)) {
+    r.fail_table(fmt::format("the water in front of the paddle ({}) has no depth: its surface, "
+                             "z = {} m, is not above its bottom, z = {} m",
+                             water->where.str(), format_number(w.still_level),
+                             format_number(water->box.min.z)));
+  }
+  // Water behind the paddle would be pushed by its back, making waves of its own.
+  for (const FillSpec& f : spec_.fills) {
+    const bool behind = w.direction > 0 ? f.box.min.x < w.paddle_x - 0.5 * dp
+                                        : f.box.max.x > w.paddle_x + 0.5 * dp;
+    if (!behind) continue;
+    r.fail_value("wavemaker", maker,
+                 fmt::format("the fill at {} holds water behind the paddle (x {} {} m): a piston "
+                             "has water on one side only; end the fill at the paddle's face",
+                             f.where.str(), w.direction > 0 ? "<" : ">",
+                             format_number(w.paddle_x)));
+  }
+}
+
+void CaseReader::check_paddle_geometry(const TomlTableReader& r, const toml::node& maker) const {
+  const WaveSpec& w = spec_.waves;
+  const WallSpec& wall = spec_.walls[w.wall];
+  const double dp = spec_.simulation.dp;
+  const double bottom = w.still_level - w.depth;
+  const double crest = w.still_level + (w.kind == WaveKind::Regular ? w.height : w.jonswap.hs);
+  if (wall.box.min.z > bottom + 0.5 * dp || wall.box.max.z < crest) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("the paddle wall '{}' ({}) spans z from {} to {} m, and a piston "
+                             "must reach from the bottom, z = {} m, to above the crests, z = {:.4g} "
+                             "m (the still water plus the wave height): water would pass under or "
+                             "over it",
+                             wall.name, wall.where.str(), format_number(wall.box.min.z),
+                             format_number(wall.box.max.z), format_number(bottom), crest));
+  }
+  if (is_2d()) return;
+  for (const FillSpec& f : spec_.fills) {
+    if (wall.box.min.y <= f.box.min.y + 0.5 * dp && wall.box.max.y >= f.box.max.y - 0.5 * dp)
+      continue;
+    r.fail_value("wavemaker", maker,
+                 fmt::format("the paddle wall '{}' ({}) spans y from {} to {} m, narrower than "
+                             "the water of the fill at {} (y from {} to {} m): a piston spans "
+                             "the tank's width",
+                             wall.name, wall.where.str(), format_number(wall.box.min.y),
+                             format_number(wall.box.max.y), f.where.str(),
+                             format_number(f.box.min.y), format_number(f.box.max.y)));
   }
 }
 
@@ -142,12 +214,24 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     w.period = period = r.required_number("period", NumberRule::positive("s"),
                                           "the wave period T, s");
     w.theory = r.choice("theory", kWaveTheoryNames, w.theory);
+    if (period > spec_.simulation.end_time) {
+      r.fail_value("period", *r.find("period"),
+                   fmt::format("is longer than the run (simulation.end_time = {} s): not one "
+                               "wave would be made",
+                               format_number(spec_.simulation.end_time)));
+    }
   } else {
     height_key = "hs";
     w.jonswap.hs = height = r.required_number("hs", NumberRule::positive("m"),
                                               "the significant wave height Hm0, m");
     w.jonswap.tp = period = r.required_number("tp", NumberRule::positive("s"),
                                               "the peak period Tp, s");
+    if (period > spec_.simulation.end_time) {
+      r.fail_value("tp", *r.find("tp"),
+                   fmt::format("is longer than the run (simulation.end_time = {} s): not one "
+                               "wave would be made",
+                               format_number(spec_.simulation.end_time)));
+    }
     w.jonswap.gamma = r.number("gamma", NumberRule::closed(1, 20, ""), w.jonswap.gamma);
     w.seed = static_cast<std::uint64_t>(
         r.integer("seed", IntRule{0, std::numeric_limits<std::int64_t>::max()}, 1));
@@ -185,9 +269,23 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
 void CaseReader::set_paddle_motion(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
   WallSpec& wall = spec_.walls[w.wall];
-  const SampledPaddle s = sample_paddle(train_paddle_motion(w.paddle, w.train),
-                                        spec_.simulation.end_time,
-                                        paddle_sample_interval(w.train));
+  const PaddleMotion motion = train_paddle_motion(w.paddle, w.train);
+  const double interval = paddle_sample_interval(w.train);
+  const double samples = spec_.simulation.end_time / interval;
+  const double work = samples * static_cast<double>(motion.harmonics.size());
+  if (samples > kMaxPaddleSamples || work > kMaxPaddleWork) {
+    r.fail_table(fmt::format(
+        "the paddle's velocity table would take {:.3g} samples (simulation.end_time = {} s, one "
+        "every {:.3g} s: a hundredth of the shortest component's period) of {} component{}: "
+        "more than netsph tabulates ({:.0e} samples, {:.0e} sample-components); shorten the run{}",
+        samples, format_number(spec_.simulation.end_time), interval, motion.harmonics.size(),
+        motion.harmonics.size() == 1 ? "" : "s", kMaxPaddleSamples, kMaxPaddleWork,
+        w.kind == WaveKind::Jonswap ? " or give fewer components" : ""));
+  }
+  const SampledPaddle s = sample_paddle(motion, spec_.simulation.end_time, interval);
+  if (!std::isfinite(s.max_excursion)) {
+    r.fail_table("the paddle's motion is not finite: the wave is too long for the water depth");
+  }
   w.max_excursion = s.max_excursion;
   wall.motion.times = s.times;
   wall.motion.velocities.clear();
@@ -276,6 +374,15 @@ void CaseReader::read_damping() {
     }
     check_in_domain(r, "from", {z.from, 0, 0});
     check_in_domain(r, "to", {z.to, 0, 0});
+    for (const DampingSpec& other : spec_.damping) {
+      if (other.name != z.name) continue;
+      const toml::node* name = r.find("name");
+      const std::string message =
+          fmt::format("damping zone name \"{}\" is used twice: by {} and {}; names must be unique",
+                      z.name, other.where.str(), label);
+      if (name) r.fail_value("name", *name, message);
+      r.fail_table(message);
+    }
     z.velocity = read_in_plane_vector(r, "velocity", NumberRule::any("m/s"), {});
     const double length = std::fabs(z.to - z.from);
     if (const auto rate = r.optional_number("rate", NumberRule::positive("1/s"))) {
@@ -287,7 +394,28 @@ void CaseReader::read_damping() {
                                "derive it from",
                                label));
     }
+    check_damping_clear_of_paddle(r, z);
     spec_.damping.push_back(z);
+  }
+}
+
+void CaseReader::check_damping_clear_of_paddle(const TomlTableReader& r,
+                                               const DampingSpec& zone) const {
+  const WaveSpec& w = spec_.waves;
+  if (!w.given) return;
+  // Where the zone damps: s = (x - from) / (to - from) > 0. At the paddle's face (or within
+  // its travel) it would damp the wave where it is made.
+  const double e = w.max_excursion;
+  for (const double x : {w.paddle_x - e, w.paddle_x + e}) {
+    if ((x - zone.from) / (zone.to - zone.from) <= 0) continue;
+    r.fail_value(
+        "to", *r.find("to"),
+        fmt::format("the zone damps from x = {} m towards x = {} m and on beyond it, which takes "
+                    "in the paddle at x = {} m: it would damp the wave where it is made. The zone "
+                    "must grow away from the paddle (to {} from for waves travelling in {}x) and "
+                    "start in front of it",
+                    format_number(zone.from), format_number(zone.to), format_number(w.paddle_x),
+                    w.direction > 0 ? ">" : "<", w.direction > 0 ? "+" : "-"));
   }
 }
 
@@ -318,13 +446,21 @@ void CaseReader::read_gauges() {
                    "must be a plain name: letters, digits, '_', '-' and '.' (it heads a column "
                    "of gauges.csv)");
     }
+    // gauges.csv's columns: time, then <name> and <name>_target per gauge.
+    if (const toml::node* name = r.find("name");
+        name && (gauge.name == "time" || gauge.name.ends_with("_target"))) {
+      r.fail_value("name", *name,
+                   "is a name gauges.csv gives its own columns (\"time\", \"<gauge>_target\"); "
+                   "choose another");
+    }
     for (const GaugeSpec& other : spec_.gauges) {
-      if (other.name == gauge.name) {
-        r.fail_value("name", *r.find("name"),
-                     fmt::format("is used twice: by {} too; gauge names must be unique (each "
-                                 "heads a column of gauges.csv)",
-                                 other.where.str()));
-      }
+      if (other.name != gauge.name) continue;
+      const std::string message =
+          fmt::format("gauge name \"{}\" is used twice: by {} and {}{}; gauge names must be "
+                      "unique (each heads a column of gauges.csv)",
+                      gauge.name, other.where.str(), label, r.has("name") ? "" : " (its default)");
+      if (const toml::node* name = r.find("name")) r.fail_value("name", *name, message);
+      r.fail_table(message);
     }
     gauge.x = r.required_number("x", NumberRule::any("m"), "the gauge's x, m");
     if (is_2d()) {
@@ -345,51 +481,72 @@ void CaseReader::read_gauges() {
 }
 
 void CaseReader::check_gauge_position(const TomlTableReader& r, const GaugeSpec& gauge) const {
-  const std::string_view key = "x";
   const Vec3d at{gauge.x, gauge.y, 0};
+  const std::array<std::string_view, 2> keys = {"x", "y"};
   const DomainSpec& d = spec_.domain;
   if (d.given) {
     for (const int axis : {0, 1}) {
       if (axis == 1 && is_2d()) continue;
       if (at[axis] >= d.min[axis] && at[axis] <= d.max[axis]) continue;
-      const std::string_view k = axis == 0 ? "x" : "y";
+      const std::string_view k = keys[static_cast<std::size_t>(axis)];
       r.fail_value(k, *r.find(k),
                    fmt::format("lies outside [domain] ({} from {} to {} m)", k,
                                format_number(d.min[axis]), format_number(d.max[axis])));
     }
   }
-  // In a wall: within the particle layers of one of its vertical faces.
+  // In a wall, or so close to its face that the kernel (2h) reaches into it: the fluid volume
+  // sum there stays under one half at any height and the gauge would read nothing.
   const double dp = spec_.simulation.dp;
+  const double support = 2 * spec_.simulation.h_over_dp * dp;
   for (const WallSpec& w : spec_.walls) {
+    const bool paddle = spec_.waves.given && &w == &spec_.walls[spec_.waves.wall];
+    const double travel = paddle ? spec_.waves.max_excursion : 0.0;
     for (const int axis : {0, 1}) {
       if (axis == 1 && is_2d()) continue;
       const int other = 1 - axis;
       const bool across = is_2d() || (at[other] >= w.box.min[other] && at[other] <= w.box.max[other]);
       if (!across) continue;
       const double thick = w.layers * dp;
-      const bool in_min = w.faces[2 * axis] && at[axis] < w.box.min[axis] &&
-                          at[axis] > w.box.min[axis] - thick;
-      const bool in_max = w.faces[2 * axis + 1] && at[axis] > w.box.max[axis] &&
-                          at[axis] < w.box.max[axis] + thick;
-      if (!in_min && !in_max) continue;
-      const std::string_view k = axis == 0 ? "x" : "y";
-      r.fail_value(k, *r.find(k),
-                   fmt::format("lies in wall '{}' ({}): its particle layers span {} from {:.4g} "
-                               "to {:.4g} m; put the gauge in the water",
-                               w.name, w.where.str(), k,
-                               in_min ? w.box.min[axis] - thick : w.box.max[axis],
-                               in_min ? w.box.min[axis] : w.box.max[axis] + thick));
+      const std::string_view k = keys[static_cast<std::size_t>(axis)];
+      for (const int side : {0, 1}) {
+        if (!w.faces[static_cast<std::size_t>(2 * axis + side)]) continue;
+        const double face = side == 0 ? w.box.min[axis] : w.box.max[axis];
+        const double out = side == 0 ? face - at[axis] : at[axis] - face;  // > 0: in the layers
+        if (out > 0 && out < thick) {
+          r.fail_value(k, *r.find(k),
+                       fmt::format("lies in wall '{}' ({}): its particle layers span {} from {:.4g} "
+                                   "to {:.4g} m; put the gauge in the water",
+                                   w.name, w.where.str(), k, side == 0 ? face - thick : face,
+                                   side == 0 ? face : face + thick));
+        }
+        if (out <= 0 && -out < support + travel) {
+          r.fail_value(k, *r.find(k),
+                       fmt::format("is {:.4g} m from the face of wall '{}' ({}) at {} = {} m{}: "
+                                   "closer than {:.4g} m ({}the kernel's reach 2h), the fluid "
+                                   "volume sum stays under one half and the gauge reads nothing; "
+                                   "move it into the water",
+                                   -out, w.name, w.where.str(), k, format_number(face),
+                                   paddle ? " (the paddle)" : "", support + travel,
+                                   paddle ? "the paddle's travel plus " : ""));
+        }
+      }
     }
   }
-  bool over_water = false;
-  for (const FillSpec& f : spec_.fills) {
-    over_water = over_water || (at.x >= f.box.min.x && at.x <= f.box.max.x &&
-                                (is_2d() || (at.y >= f.box.min.y && at.y <= f.box.max.y)));
-  }
-  if (!over_water) {
-    r.fail_value(key, *r.find(key),
-                 "lies over no [[fill]]: a gauge measures the water below it, and there is none "
-                 "there");
+  // Over water: x within a fill first, then (3D) x and y within the same one.
+  for (const int axis : {0, 1}) {
+    if (axis == 1 && is_2d()) continue;
+    bool over_water = false;
+    for (const FillSpec& f : spec_.fills) {
+      bool inside = at.x >= f.box.min.x && at.x <= f.box.max.x;
+      if (axis == 1) inside = inside && at.y >= f.box.min.y && at.y <= f.box.max.y;
+      over_water = over_water || inside;
+    }
+    if (!over_water) {
+      const std::string_view k = keys[static_cast<std::size_t>(axis)];
+      r.fail_value(k, *r.find(k),
+                   "lies over no [[fill]]: a gauge measures the water below it, and there is "
+                   "none there");
+    }
   }
 }
 

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "netsph/waves/wave_record.hpp"
 
 namespace netsph {
@@ -36,6 +38,12 @@ void read_back(const std::filesystem::path& file, std::vector<double>& times,
 }
 
 nlohmann::json record_json(const WaveRecordSummary& s) {
+  // No complete wave: nothing to report (null, not zeros that read as a flat sea).
+  if (s.waves.empty()) {
+    return {{"waves", 0},          {"mean_level_m", nullptr},  {"mean_height_m", nullptr},
+            {"mean_period_s", nullptr}, {"h_third_m", nullptr}, {"mean_crest_m", nullptr},
+            {"mean_trough_m", nullptr}, {"max_crest_m", nullptr}, {"max_trough_m", nullptr}};
+  }
   double max_crest = 0, max_trough = 0;
   for (const RecordWave& w : s.waves) {
     max_crest = std::max(max_crest, w.crest);
@@ -114,8 +122,12 @@ GaugeRecorder::GaugeRecorder(const Simulation& sim, const std::filesystem::path&
       gauges_[g].eta = back[per * g];
       if (per == 2) gauges_[g].target = back[per * g + 1];
     }
-    // The row at the resume time is kept: the next is one interval after it.
-    if (!times_.empty()) schedule_.next = times_.back() + schedule_.every;
+    // The row at the resume time is kept: the next is the first of the uninterrupted run's
+    // times (whole intervals from 0) after it.
+    if (!times_.empty()) {
+      schedule_.next = 0;
+      schedule_.take(schedule_time(times_.back()));
+    }
   } else {
     csv_ = std::make_unique<CsvSeries>(file_, columns);
   }
@@ -157,6 +169,14 @@ nlohmann::json GaugeRecorder::summary() const {
                         {"window_s", {window[0], window[1]}}};
     const WaveRecordSummary measured = analyse(times_, g.eta, window[0], window[1]);
     j["measured"] = record_json(measured);
+    if (measured.waves.empty()) {
+      const double last = times_.empty() ? 0.0 : times_.back();
+      j["note"] = last < window[1]
+                      ? fmt::format("no complete wave in the window: the record ends at {:.6g} s",
+                                    last)
+                      : std::string("no complete wave in the window (fewer than two "
+                                    "up-crossings, or no water at the gauge)");
+    }
     if (spec_->waves.given) {
       const WaveRecordSummary target = analyse(times_, g.target, window[0], window[1]);
       j["target"] = record_json(target);

@@ -60,6 +60,12 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
         w.where.str(), regular ? "height" : "hs", height, per_height, dp, kMinParticlesPerHeight,
         2 * spec.simulation.h_over_dp, height / kMinParticlesPerHeight));
   }
+  if (w.ramp >= spec.simulation.end_time) {
+    scene.warnings.push_back(fmt::format(
+        "[waves] ({}): the ramp, {:g} s, lasts the whole run (simulation.end_time = {:g} s): "
+        "the paddle never reaches its full stroke",
+        w.where.str(), w.ramp, spec.simulation.end_time));
+  }
   const double wavelength = w.reference_wavelength();
   for (const DampingSpec& d : spec.damping) {
     const double length = std::fabs(d.to - d.from);
