@@ -180,6 +180,8 @@ class CaseReader {
 
   // case_reader_waves.cpp
   void read_waves();
+  /// [waves] in a standalone net case: no paddle, the water's depth and level given.
+  void read_standalone_waves(const TomlTableReader& r);
   void read_wave_paddle_wall(const TomlTableReader& r, const toml::node& maker);
   /// The still-water level and depth from the fill in front of the paddle.
   void read_wave_levels(const TomlTableReader& r, const toml::node& maker);

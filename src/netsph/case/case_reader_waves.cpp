@@ -48,10 +48,6 @@ void CaseReader::read_waves() {
   WaveSpec& w = spec_.waves;
   w.given = true;
   w.where = r.location();
-  if (spec_.fills.empty()) {
-    r.fail_table("waves need water: this case has no [[fill]] (a standalone net run does not "
-                 "take [waves] yet)");
-  }
   const Vec3d g = spec_.fluid.gravity;
   if (!(g.z < 0) || g.x != 0 || g.y != 0) {
     r.fail_table(fmt::format("waves are gravity waves: they need fluid.gravity = [0, 0, -g] with "
@@ -59,6 +55,16 @@ void CaseReader::read_waves() {
                              format_vec3(g)));
   }
   w.kind = r.choice("type", kWaveKindNames, w.kind);
+  if (spec_.net_only()) return read_standalone_waves(r);
+  if (spec_.fills.empty()) r.fail_table("waves need water: this case has no [[fill]]");
+  for (const std::string_view key : {"depth", "still_water_level", "origin_x"}) {
+    if (const toml::node* node = r.find(key)) {
+      r.fail_value(key, *node,
+                   "applies to standalone net cases only (no [[fill]]); here the water's depth "
+                   "and level are the fill's in front of the paddle, and the paddle is the "
+                   "waves' origin");
+    }
+  }
   w.paddle = r.choice("paddle", kPaddleTypeNames, w.paddle);
   if (w.paddle == PaddleType::Flap) {
     r.fail_value("paddle", *r.find("paddle"),
@@ -81,6 +87,26 @@ void CaseReader::read_waves() {
   check_paddle_geometry(r, maker);
   set_paddle_motion(r);
   check_free_surface(r);
+}
+
+void CaseReader::read_standalone_waves(const TomlTableReader& r) {
+  WaveSpec& w = spec_.waves;
+  w.standalone = true;
+  for (const std::string_view key : {"wavemaker", "paddle"}) {
+    if (const toml::node* node = r.find(key)) {
+      r.fail_value(key, *node,
+                   "a standalone net case (nets, no [[fill]]) has no paddle: its waves are "
+                   "given by their theory, travelling in +x from origin_x; remove the key");
+    }
+  }
+  w.depth = r.required_number("depth", NumberRule::positive("m"),
+                              "the water depth h, m (a standalone net case has no fill)");
+  w.still_level = r.required_number("still_water_level", NumberRule::any("m"),
+                                    "z of the still-water surface, m");
+  w.paddle_x = r.number("origin_x", NumberRule::any("m"), 0.0);
+  w.direction = 1;
+  if (spec_.current.given) w.current = spec_.current.velocity.x;
+  read_wave_train(r);
 }
 
 void CaseReader::read_wave_paddle_wall(const TomlTableReader& r, const toml::node& maker) {
@@ -255,14 +281,22 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
                              height / wavelength, wavelength, format_number(period),
                              format_number(w.depth), limit, limit * wavelength));
   }
-  if (w.kind == WaveKind::Regular) {
-    w.train = regular_wave_train(w.height, w.period, w.depth,
-                                 w.theory == WaveTheory::Stokes2 ? 2 : 1, w.ramp, g);
-  } else {
-    const double fp = 1 / w.jonswap.tp;
-    w.train = irregular_wave_train(
-        jonswap_components(w.jonswap, kJonswapLow * fp, kJonswapHigh * fp, w.components, w.seed),
-        w.depth, w.ramp, g);
+  try {
+    if (w.kind == WaveKind::Regular) {
+      w.train = regular_wave_train(w.height, w.period, w.depth,
+                                   w.theory == WaveTheory::Stokes2 ? 2 : 1, w.ramp, g, w.current);
+    } else {
+      const double fp = 1 / w.jonswap.tp;
+      w.train = irregular_wave_train(
+          jonswap_components(w.jonswap, kJonswapLow * fp, kJonswapHigh * fp, w.components,
+                             w.seed),
+          w.depth, w.ramp, g, w.current);
+    }
+  } catch (const Error& e) {
+    // An opposing current past the blocking speed (standalone waves on a [current]).
+    r.fail_table(fmt::format("the waves cannot exist on this current ([current] velocity x = "
+                             "{} m/s): {}",
+                             format_number(w.current), e.what()));
   }
 }
 

@@ -70,7 +70,7 @@ const std::vector<TableKeys>& schema() {
       {"probe", {"name", "type", "at", "start", "end", "points", "min", "max", "spacing", "every"}},
       {"waves",
        {"type", "paddle", "wavemaker", "height", "period", "theory", "hs", "tp", "gamma", "seed",
-        "components", "ramp"}},
+        "components", "ramp", "depth", "still_water_level", "origin_x"}},
       {"damping", {"name", "from", "to", "rate", "velocity"}},
       {"gauge", {"name", "x", "y"}},
       {"current", {"velocity", "model", "screen", "normal_drag", "tangential_drag"}},

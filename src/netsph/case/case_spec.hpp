@@ -275,7 +275,9 @@ struct ProbeSpec {
 /// [waves]: waves made by a piston paddle, a [[wall]] that the reader sets moving (its
 /// `motion` becomes the paddle's velocity, sampled: waves/wave_train.hpp), and the still-water
 /// level that gauges and damping zones refer to. The paddle is a wall with one vertical face in
-/// x: on its xmin face the waves travel in +x, on its xmax face in -x.
+/// x: on its xmin face the waves travel in +x, on its xmax face in -x. In a standalone net case
+/// (no fluid) there is no paddle: the waves travel in +x from `origin_x` over water of the
+/// given depth, on the [current]'s x velocity, and load the nets with their orbital velocity.
 enum class WaveKind : std::uint8_t { Regular, Jonswap };
 inline constexpr std::array kWaveKindNames = {EnumName<WaveKind>{"regular", WaveKind::Regular},
                                               EnumName<WaveKind>{"jonswap", WaveKind::Jonswap}};
@@ -308,7 +310,9 @@ struct WaveSpec {
   double depth = 0;          ///< still-water depth h, m (default: still level - lowest fill)
   double still_level = 0;    ///< z of the still-water level, m (default: the highest fill top)
   double ramp = 0;           ///< s (default: two periods)
-  double paddle_x = 0;       ///< x of the paddle's face at rest, m
+  double paddle_x = 0;       ///< x of the paddle's face at rest (standalone: origin_x), m
+  bool standalone = false;   ///< a standalone net case's waves: no paddle
+  double current = 0;        ///< standalone: the current along x the waves ride on, m/s
   int direction = 1;         ///< +1: the waves travel in +x; -1: in -x
   WaveTrain train;           ///< the components, set up (derived)
   double max_excursion = 0;  ///< the paddle's largest excursion from rest over the run, m

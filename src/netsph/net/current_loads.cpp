@@ -29,7 +29,9 @@ void add_screen_loads(const NetModel& net, const CurrentLoadParameters& p,
                       std::vector<Vec3d>& forces) {
   const double sn = net.real_solidity;
   for (const NetKnot& k : net.knots) {
-    const Vec3d u = p.velocity - k.velocity;
+    Vec3d water;
+    if (!water_velocity(p, k.position, water)) continue;
+    const Vec3d u = water - k.velocity;
     const double speed = norm(u);
     if (speed <= 0) continue;
     Vec3d n = knot_normal(net, k.row, k.column);
@@ -55,7 +57,9 @@ void add_morison_loads(const NetModel& net, const CurrentLoadParameters& p,
     const double length = norm(d);
     if (length <= t.diameter) continue;
     const Vec3d e = d / length;
-    const Vec3d u = p.velocity - (a.velocity + b.velocity) * 0.5;
+    Vec3d water;
+    if (!water_velocity(p, (a.position + b.position) * 0.5, water)) continue;
+    const Vec3d u = water - (a.velocity + b.velocity) * 0.5;
     const Vec3d ut = e * dot(u, e);
     const Vec3d un = u - ut;
     const double area = t.diameter * (length - t.diameter);
@@ -66,14 +70,32 @@ void add_morison_loads(const NetModel& net, const CurrentLoadParameters& p,
   }
 }
 
-/// Cylinder drag on the sinker bar in the uniform current, per bottom knot.
+/// Cylinder drag on the sinker bar in the current (and waves), per bottom knot, with the
+/// water's velocity at the bar below the knot.
 void add_sinker_loads(const NetModel& net, const CurrentLoadParameters& p,
                       std::vector<Vec3d>& forces) {
-  for (std::size_t k = 0; k < net.knots.size(); ++k)
-    forces[k] += sinker_drag(net, net.knots[k], p.velocity, p.water_density);
+  for (std::size_t k = 0; k < net.knots.size(); ++k) {
+    const NetKnot& knot = net.knots[k];
+    if (knot.sinker_length <= 0) continue;
+    Vec3d water;
+    if (!water_velocity(p, sinker_point(net, knot), water)) continue;
+    forces[k] += sinker_drag(net, knot, water, p.water_density);
+  }
 }
 
 }  // namespace
+
+bool water_velocity(const CurrentLoadParameters& p, const Vec3d& x, Vec3d& u) {
+  u = p.velocity;
+  if (!p.waves) return true;
+  const WaveSpec& w = *p.waves;
+  const double z = x.z - w.still_level;
+  if (z > w.target_elevation(x.x, p.time)) return false;
+  double along = 0, up = 0;
+  train_velocity(w.train, w.direction * (x.x - w.paddle_x), z, p.time, along, up);
+  u += Vec3d{w.direction * along, 0, up};
+  return true;
+}
 
 Vec3d sinker_point(const NetModel& net, const NetKnot& k) {
   Vec3d down = -net.up;

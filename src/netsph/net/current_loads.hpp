@@ -10,7 +10,12 @@
 //    the crossing.
 // Both use the velocity relative to the moving knots. A sinker bar adds cylinder drag on its
 // projected area (sinker_drag, which coupled runs use too, with the SPH fluid's velocity at
-// the bar).
+// the bar). With [waves] (a standalone case's), the water's velocity at each knot, twine and
+// bar is the current plus the waves' orbital velocity there (linear or Stokes-2 theory,
+// waves/wave_train.hpp), and what lies above the wave's surface is in air and takes no load.
+// Only drag: the inertia (Froude-Krylov and added mass) of twines a millimetre or two thick
+// is small beside it at the Keulegan-Carpenter numbers of waves on nets (KC = u T / d in the
+// hundreds).
 #include <vector>
 
 #include "netsph/case/case_spec.hpp"
@@ -26,7 +31,14 @@ struct CurrentLoadParameters {
   ScreenCoefficients screen = ScreenCoefficients::S3KristiansenFaltinsen;
   double normal_drag = 1.2;
   double tangential_drag = 0.1;
+  /// Waves whose orbital velocity adds to `velocity` (a standalone case's [waves]), at `time`.
+  const WaveSpec* waves = nullptr;
+  double time = 0;  ///< s
 };
+
+/// The water's velocity at x (m/s) into `u`: the current, plus the waves' orbital velocity.
+/// False where x lies above the wave's surface (in air: no load there).
+bool water_velocity(const CurrentLoadParameters& p, const Vec3d& x, Vec3d& u);
 
 /// Where the sinker bar that knot `k` carries is now: the net's bottom edge, below the bottom
 /// row of knots by NetModel::sinker_offset along the deformed net (from the knot above it

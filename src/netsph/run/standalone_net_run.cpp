@@ -1,7 +1,9 @@
 #include "netsph/run/standalone_net_run.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include <fmt/format.h>
@@ -26,6 +28,9 @@ struct NetState {
   std::unique_ptr<NetVtkSeries> vtk;
   Vec3d force_sum{}, anchor_sum{};
   int window_samples = 0;
+  /// Over the window: the least and largest force along the flow (waves: its range).
+  double force_min = std::numeric_limits<double>::infinity();
+  double force_max = -std::numeric_limits<double>::infinity();
 };
 
 Vec3d current_force(const NetModel& net, const CurrentLoadParameters& p) {
@@ -59,7 +64,8 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   report.window = force_window(spec);
 
   CurrentLoadParameters loads;
-  if (spec.current.given) {
+  if (spec.current.given || spec.waves.given) {
+    // Waves without a [current] load the net with the [current] table's default model.
     loads.velocity = spec.current.velocity;
     loads.model = spec.current.model;
     loads.screen = spec.current.screen;
@@ -68,10 +74,19 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   } else {
     loads.model = NetLoadModel::None;
   }
+  if (spec.waves.given) loads.waves = &spec.waves;
   loads.water_density = spec.fluid.density;
   loads.kinematic_viscosity = spec.fluid.kinematic_viscosity;
   const double speed = norm(loads.velocity);
+  // Waves travel in +x: their forces are reported along x when there is no current.
   const Vec3d flow = speed > 0 ? loads.velocity / speed : Vec3d{1, 0, 0};
+  // The loads change with the waves: the knots advance in steps of at most a hundredth of
+  // the shortest component's period, each with the loads at its middle.
+  double load_step = std::numeric_limits<double>::infinity();
+  if (spec.waves.given) {
+    for (const RegularWave& c : spec.waves.train.components)
+      load_step = std::min(load_step, 2 * M_PI / c.omega / 100);
+  }
 
   const NetEnvironment env = net_environment(spec);
   std::vector<NetState> nets;
@@ -108,6 +123,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   };
   auto write_row = [&](double t, long long substeps) {
     std::vector<double> row = {t, static_cast<double>(substeps)};
+    loads.time = t;
     for (NetState& st : nets) {
       const Vec3d f = current_force(st.model, loads);
       const Vec3d anchor = st.solver->anchor_force(load_function);
@@ -119,6 +135,8 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
         st.force_sum += f;
         st.anchor_sum += anchor;
         ++st.window_samples;
+        st.force_min = std::min(st.force_min, dot(f, flow));
+        st.force_max = std::max(st.force_max, dot(f, flow));
       }
     }
     series.append(row);
@@ -132,7 +150,14 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   const long long rows = static_cast<long long>(std::ceil(end_time / series_every - 1e-9));
   for (long long i = 1; i <= rows; ++i) {
     const double t_next = std::min(end_time, static_cast<double>(i) * series_every);
-    for (NetState& st : nets) report.substeps += st.solver->advance(t_next - t, load_function);
+    const int pieces = std::isfinite(load_step)
+                           ? std::max(1, static_cast<int>(std::ceil((t_next - t) / load_step)))
+                           : 1;
+    const double piece = (t_next - t) / pieces;
+    for (int k = 0; k < pieces; ++k) {
+      loads.time = t + (k + 0.5) * piece;
+      for (NetState& st : nets) report.substeps += st.solver->advance(piece, load_function);
+    }
     t = t_next;
     bool ok = true;
     for (const NetState& st : nets) ok = ok && finite(st.model);
@@ -174,6 +199,15 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   if (!report.message.empty()) j["message"] = report.message;
   j["current"] = {{"velocity_m_s", {loads.velocity.x, loads.velocity.y, loads.velocity.z}},
                   {"model", name_of(loads.model)}};
+  if (spec.waves.given) {
+    const WaveSpec& w = spec.waves;
+    j["waves"] = {{"type", name_of(w.kind)},
+                  {"height_m", w.kind == WaveKind::Regular ? w.height : w.jonswap.hs},
+                  {"period_s", w.reference_period()},
+                  {"depth_m", w.depth},
+                  {"wavelength_m", w.reference_wavelength()},
+                  {"theory", name_of(w.theory)}};
+  }
   j["force_window_s"] = {report.window[0], report.window[1]};
   j["nets"] = nlohmann::json::array();
   for (NetState& st : nets) {
@@ -215,6 +249,10 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
                          {"mean_anchor_force_N",
                           {s.mean_anchor_force.x, s.mean_anchor_force.y, s.mean_anchor_force.z}},
                          {"drag_N", dot(s.mean_force, flow)},
+                         {"force_range_N",
+                          st.window_samples > 0
+                              ? nlohmann::json::array({st.force_min, st.force_max})
+                              : nlohmann::json(nullptr)},
                          {"Cd_outline", s.drag_coefficient},
                          {"max_deflection_m", s.max_deflection},
                          {"window_samples", st.window_samples}});

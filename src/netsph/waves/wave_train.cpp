@@ -9,23 +9,32 @@ namespace netsph {
 
 namespace {
 
-/// The group velocity of the tallest component.
+/// The group velocity of the tallest component in the earth frame (relative to the water,
+/// plus the current that carries it).
 double tallest_group_velocity(const std::vector<RegularWave>& components, double g) {
   const RegularWave* tallest = nullptr;
   for (const RegularWave& c : components)
     if (!tallest || c.height > tallest->height) tallest = &c;
-  return tallest ? relative_group_velocity(tallest->k, tallest->depth, g) : 0.0;
+  return tallest ? relative_group_velocity(tallest->k, tallest->depth, g) + tallest->current
+                 : 0.0;
+}
+
+/// The wave number of angular frequency omega on the current (still water: U = 0).
+double wave_number_for(double omega, double depth, double current, double g) {
+  return current == 0 ? wave_number(omega, depth, g)
+                      : wave_number_on_current(omega, depth, current, g);
 }
 
 }  // namespace
 
 WaveTrain regular_wave_train(double height, double period, double depth, int order, double ramp,
-                             double g) {
+                             double g, double current) {
   RegularWave w;
   w.height = height;
   w.omega = 2 * M_PI / period;
-  w.k = wave_number(w.omega, depth, g);
+  w.k = wave_number_for(w.omega, depth, current, g);
   w.depth = depth;
+  w.current = current;
   w.order = order;
   WaveTrain train{{w}, ramp, 0};
   train.front_speed = tallest_group_velocity(train.components, g);
@@ -33,7 +42,7 @@ WaveTrain regular_wave_train(double height, double period, double depth, int ord
 }
 
 WaveTrain irregular_wave_train(const std::vector<WaveComponent>& components, double depth,
-                               double ramp, double g) {
+                               double ramp, double g, double current) {
   WaveTrain train;
   train.ramp = ramp;
   train.components.reserve(components.size());
@@ -41,8 +50,9 @@ WaveTrain irregular_wave_train(const std::vector<WaveComponent>& components, dou
     RegularWave w;
     w.height = 2 * c.amplitude;
     w.omega = 2 * M_PI * c.frequency;
-    w.k = wave_number(w.omega, depth, g);
+    w.k = wave_number_for(w.omega, depth, current, g);
     w.depth = depth;
+    w.current = current;
     w.phase = c.phase;
     train.components.push_back(w);
   }
@@ -66,6 +76,21 @@ double train_elevation(const WaveTrain& train, double distance, double t) {
   double eta = 0;
   for (const RegularWave& w : train.components) eta += wave_elevation(w, distance, t);
   return ramp * eta;
+}
+
+void train_velocity(const WaveTrain& train, double distance, double z, double t, double& u,
+                    double& w) {
+  u = w = 0;
+  const double arrival = train.front_speed > 0 ? distance / train.front_speed : 0.0;
+  const double ramp = wave_ramp(t - arrival, train.ramp);
+  if (!(ramp > 0)) return;
+  for (const RegularWave& c : train.components) {
+    double uc = 0, wc = 0;
+    wave_velocity(c, distance, z, t, uc, wc);
+    u += uc - c.current;
+    w += wc;
+  }
+  u *= ramp, w *= ramp;
 }
 
 SampledPaddle sample_paddle(const PaddleMotion& m, double end_time, double interval) {
