@@ -13,6 +13,7 @@
 #include "netsph/case/case_reader_impl.hpp"
 #include "netsph/core/error.hpp"
 #include "netsph/waves/dispersion.hpp"
+#include "netsph/waves/wave_kinematics.hpp"
 
 namespace netsph::case_detail {
 namespace {
@@ -23,6 +24,9 @@ constexpr double kJonswapLow = 0.5, kJonswapHigh = 3.0;
 
 /// The paddle's velocity table: at most this many samples (32 B each), and this many
 /// sample-components of work to fill it (a few seconds).
+/// Stokes second order's largest second-order surface, as a fraction of the first order's.
+constexpr double kMaxStokesRatio = 0.25;
+
 constexpr double kMaxPaddleSamples = 5e6, kMaxPaddleWork = 5e9;
 
 /// The highest top (surface_z, else the box top) and the lowest bottom of the fills.
@@ -106,6 +110,29 @@ void CaseReader::read_standalone_waves(const TomlTableReader& r) {
   w.paddle_x = r.number("origin_x", NumberRule::any("m"), 0.0);
   w.direction = 1;
   if (spec_.current.given) w.current = spec_.current.velocity.x;
+  // Every net in the water column: none below the bed, none wholly above the still water.
+  const double bed = w.still_level - w.depth;
+  for (const NetSpec& net : spec_.nets) {
+    const Vec3d n = net.normal / norm(net.normal);
+    Vec3d up = net.up - n * dot(n, net.up);
+    up = up / norm(up);
+    const Vec3d across = cross(n, up);
+    const double reach = 0.5 * (net.height * std::fabs(up.z) + net.width * std::fabs(across.z));
+    const double low = net.center.z - reach;
+    if (low < bed - 1e-9 * std::max(1.0, std::fabs(bed))) {
+      r.fail_value("depth", *r.find("depth"),
+                   fmt::format("puts the bed at z = {} m (still_water_level - depth), above the "
+                               "lowest point of net '{}' ({}), z = {:.4g} m: the net must lie "
+                               "in the water",
+                               format_number(bed), net.name, net.where.str(), low));
+    }
+    if (low >= w.still_level) {
+      r.fail_value("still_water_level", *r.find("still_water_level"),
+                   fmt::format("lies at or below the lowest point of net '{}' ({}), z = {:.4g} m: "
+                               "the whole net would be in air",
+                               net.name, net.where.str(), low));
+    }
+  }
   read_wave_train(r);
 }
 
@@ -269,17 +296,48 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     w.components = static_cast<int>(r.integer("components", IntRule{10, 20000}, fallback));
   }
   w.ramp = r.number("ramp", NumberRule::non_negative("s"), 2 * period);
-  // The breaking limit (Miche 1944) at the wave's (or the sea's peak) wavelength.
-  const double k = wave_number(2 * M_PI / period, w.depth, g);
+  // The breaking limit (Miche 1944) at the wave's (or the sea's peak) wavelength, on the
+  // current it rides (standalone waves; a flume's water is still).
+  double k = 0;
+  try {
+    k = w.current == 0 ? wave_number(2 * M_PI / period, w.depth, g)
+                       : wave_number_on_current(2 * M_PI / period, w.depth, w.current, g);
+  } catch (const Error& e) {
+    r.fail_table(fmt::format("the waves cannot exist on this current ([current] velocity x = "
+                             "{} m/s): {}",
+                             format_number(w.current), e.what()));
+  }
   const double wavelength = 2 * M_PI / k, limit = breaking_steepness(k * w.depth);
   if (height / wavelength > limit) {
     r.fail_value(height_key, *r.find(height_key),
                  fmt::format("makes a wave steeper than the breaking limit: H / L = {:.4g} with "
-                             "L = {:.4g} m (T = {} s, depth {} m), and a wave breaks above H / L "
-                             "= 0.142 tanh(kh) = {:.4g} (Miche 1944); the highest that does not "
-                             "break is {:.4g} m",
+                             "L = {:.4g} m (T = {} s, depth {} m{}), and a wave breaks above H / "
+                             "L = 0.142 tanh(kh) = {:.4g} (Miche 1944); the highest that does "
+                             "not break is {:.4g} m",
                              height / wavelength, wavelength, format_number(period),
-                             format_number(w.depth), limit, limit * wavelength));
+                             format_number(w.depth),
+                             w.current == 0 ? std::string()
+                                            : fmt::format(", on a {} m/s current",
+                                                          format_number(w.current)),
+                             limit, limit * wavelength));
+  }
+  // Stokes' expansion holds while its second-order surface stays small beside the first
+  // order. In shallow water the ratio is 3 H L^2 / (32 pi^2 h^3) = Ur / 105 (Ur = H L^2 / h^3,
+  // the Ursell number), so a quarter is Ur = 26, the usual limit of Stokes theory, past which
+  // cnoidal theory applies (Dean & Dalrymple 1991, sec. 11).
+  if (w.kind == WaveKind::Regular && w.theory == WaveTheory::Stokes2) {
+    RegularWave probe;
+    probe.height = height, probe.k = k, probe.depth = w.depth, probe.order = 2;
+    const double ratio = second_order_surface_amplitude(probe) / (0.5 * height);
+    if (ratio > kMaxStokesRatio) {
+      r.fail_value("theory", *r.find("theory"),
+                   fmt::format("Stokes second order is outside its range here: its second-order "
+                               "surface is {:.3g} of the first order's (at most {}), the Ursell "
+                               "number H L^2 / h^3 = {:.3g}; use theory = \"linear\" (netsph has "
+                               "no cnoidal theory for such long, high waves)",
+                               ratio, kMaxStokesRatio,
+                               height * wavelength * wavelength / std::pow(w.depth, 3)));
+    }
   }
   try {
     if (w.kind == WaveKind::Regular) {

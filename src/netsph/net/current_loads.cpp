@@ -26,12 +26,12 @@ Vec3d knot_normal(const NetModel& net, int row, int column) {
 }
 
 void add_screen_loads(const NetModel& net, const CurrentLoadParameters& p,
-                      std::vector<Vec3d>& forces) {
+                      std::vector<Vec3d>& forces, const NetWater& w) {
   const double sn = net.real_solidity;
-  for (const NetKnot& k : net.knots) {
-    Vec3d water;
-    if (!water_velocity(p, k.position, water)) continue;
-    const Vec3d u = water - k.velocity;
+  for (std::size_t i = 0; i < net.knots.size(); ++i) {
+    const NetKnot& k = net.knots[i];
+    if (!w.knot_wet[i]) continue;
+    const Vec3d u = w.knot[i] - k.velocity;
     const double speed = norm(u);
     if (speed <= 0) continue;
     Vec3d n = knot_normal(net, k.row, k.column);
@@ -49,17 +49,17 @@ void add_screen_loads(const NetModel& net, const CurrentLoadParameters& p,
 }
 
 void add_morison_loads(const NetModel& net, const CurrentLoadParameters& p,
-                       std::vector<Vec3d>& forces) {
-  for (const NetTwine& t : net.twines) {
+                       std::vector<Vec3d>& forces, const NetWater& w) {
+  for (std::size_t i = 0; i < net.twines.size(); ++i) {
+    const NetTwine& t = net.twines[i];
     const NetKnot& a = net.knots[t.a];
     const NetKnot& b = net.knots[t.b];
     const Vec3d d = b.position - a.position;
     const double length = norm(d);
     if (length <= t.diameter) continue;
     const Vec3d e = d / length;
-    Vec3d water;
-    if (!water_velocity(p, (a.position + b.position) * 0.5, water)) continue;
-    const Vec3d u = water - (a.velocity + b.velocity) * 0.5;
+    if (!w.twine_wet[i]) continue;
+    const Vec3d u = w.twine[i] - (a.velocity + b.velocity) * 0.5;
     const Vec3d ut = e * dot(u, e);
     const Vec3d un = u - ut;
     const double area = t.diameter * (length - t.diameter);
@@ -73,13 +73,11 @@ void add_morison_loads(const NetModel& net, const CurrentLoadParameters& p,
 /// Cylinder drag on the sinker bar in the current (and waves), per bottom knot, with the
 /// water's velocity at the bar below the knot.
 void add_sinker_loads(const NetModel& net, const CurrentLoadParameters& p,
-                      std::vector<Vec3d>& forces) {
+                      std::vector<Vec3d>& forces, const NetWater& w) {
   for (std::size_t k = 0; k < net.knots.size(); ++k) {
     const NetKnot& knot = net.knots[k];
-    if (knot.sinker_length <= 0) continue;
-    Vec3d water;
-    if (!water_velocity(p, sinker_point(net, knot), water)) continue;
-    forces[k] += sinker_drag(net, knot, water, p.water_density);
+    if (knot.sinker_length <= 0 || !w.sinker_wet[k]) continue;
+    forces[k] += sinker_drag(net, knot, w.sinker[k], p.water_density);
   }
 }
 
@@ -91,6 +89,7 @@ bool water_velocity(const CurrentLoadParameters& p, const Vec3d& x, Vec3d& u) {
   const WaveSpec& w = *p.waves;
   const double z = x.z - w.still_level;
   if (z > w.target_elevation(x.x, p.time)) return false;
+  // Below the bed (a net sagging into it): the velocity at the bed (wave_velocity's rule).
   double along = 0, up = 0;
   train_velocity(w.train, w.direction * (x.x - w.paddle_x), z, p.time, along, up);
   u += Vec3d{w.direction * along, 0, up};
@@ -146,19 +145,42 @@ Vec3d sinker_drag(const NetModel& net, const NetKnot& k, const Vec3d& flow, doub
   return un * (0.5 * water_density * net.sinker_drag_coefficient * area * norm(un));
 }
 
+void sample_net_water(const NetModel& net, const CurrentLoadParameters& p, NetWater& out) {
+  const std::size_t knots = net.knots.size(), twines = net.twines.size();
+  out.knot.resize(knots), out.knot_wet.resize(knots);
+  out.sinker.resize(knots), out.sinker_wet.resize(knots);
+  out.twine.resize(twines), out.twine_wet.resize(twines);
+  for (std::size_t i = 0; i < knots; ++i) {
+    const NetKnot& k = net.knots[i];
+    out.knot_wet[i] = water_velocity(p, k.position, out.knot[i]);
+    out.sinker_wet[i] =
+        k.sinker_length > 0 && water_velocity(p, sinker_point(net, k), out.sinker[i]);
+  }
+  for (std::size_t i = 0; i < twines; ++i) {
+    const NetTwine& t = net.twines[i];
+    const Vec3d middle = (net.knots[t.a].position + net.knots[t.b].position) * 0.5;
+    out.twine_wet[i] = water_velocity(p, middle, out.twine[i]);
+  }
+}
+
 void add_current_loads(const NetModel& net, const CurrentLoadParameters& p,
-                       std::vector<Vec3d>& forces) {
+                       std::vector<Vec3d>& forces, const NetWater* water) {
+  NetWater sampled;
+  if (!water) {
+    sample_net_water(net, p, sampled);
+    water = &sampled;
+  }
   switch (p.model) {
     case NetLoadModel::None:
       break;
     case NetLoadModel::Screen:
-      add_screen_loads(net, p, forces);
+      add_screen_loads(net, p, forces, *water);
       break;
     case NetLoadModel::Morison:
-      add_morison_loads(net, p, forces);
+      add_morison_loads(net, p, forces, *water);
       break;
   }
-  add_sinker_loads(net, p, forces);
+  add_sinker_loads(net, p, forces, *water);
 }
 
 }  // namespace netsph

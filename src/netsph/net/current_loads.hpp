@@ -16,6 +16,7 @@
 // Only drag: the inertia (Froude-Krylov and added mass) of twines a millimetre or two thick
 // is small beside it at the Keulegan-Carpenter numbers of waves on nets (KC = u T / d in the
 // hundreds).
+#include <cstdint>
 #include <vector>
 
 #include "netsph/case/case_spec.hpp"
@@ -66,8 +67,19 @@ int sinker_sample_points(const NetModel& net, const NetKnot& k, SinkerSamples& s
 /// without a sinker share.
 Vec3d sinker_drag(const NetModel& net, const NetKnot& k, const Vec3d& flow, double water_density);
 
-/// Adds the current's force on every knot to `forces` (one per knot).
+/// The water's velocity where the loads act on a net (each knot, each twine's middle, each
+/// knot's sinker bar) and whether there is water there: sampled once for many load
+/// evaluations (a standalone run's knot sub-steps within one of its load steps), since waves
+/// make it a sum over every component at every point.
+struct NetWater {
+  std::vector<Vec3d> knot, twine, sinker;
+  std::vector<std::uint8_t> knot_wet, twine_wet, sinker_wet;
+};
+void sample_net_water(const NetModel& net, const CurrentLoadParameters& p, NetWater& out);
+
+/// Adds the current's force on every knot to `forces` (one per knot), with the water's
+/// velocity from `water` when given (sample_net_water of the same net), else evaluated here.
 void add_current_loads(const NetModel& net, const CurrentLoadParameters& p,
-                       std::vector<Vec3d>& forces);
+                       std::vector<Vec3d>& forces, const NetWater* water = nullptr);
 
 }  // namespace netsph

@@ -31,11 +31,13 @@ struct NetState {
   /// Over the window: the least and largest force along the flow (waves: its range).
   double force_min = std::numeric_limits<double>::infinity();
   double force_max = -std::numeric_limits<double>::infinity();
+  NetWater water;              ///< the water at the net, sampled once per load step
+  bool wet_in_window = false;  ///< a knot was in the water at a row in the window
 };
 
-Vec3d current_force(const NetModel& net, const CurrentLoadParameters& p) {
+Vec3d current_force(const NetModel& net, const CurrentLoadParameters& p, const NetWater& water) {
   std::vector<Vec3d> f(net.knots.size());
-  add_current_loads(net, p, f);
+  add_current_loads(net, p, f, &water);
   Vec3d sum{};
   for (const Vec3d& v : f) sum += v;
   return sum;
@@ -109,7 +111,15 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   }
   CsvSeries series(options.out_dir / "series.csv", columns);
 
+  // The water at each net is sampled at the start of each load step (with waves, a sum over
+  // every component at every knot) and serves every knot sub-step of it.
+  auto sample_water = [&] {
+    for (NetState& st : nets) sample_net_water(st.model, loads, st.water);
+  };
   auto load_function = [&](const NetModel& net, std::vector<Vec3d>& f) {
+    for (const NetState& st : nets) {
+      if (&st.model == &net) return add_current_loads(net, loads, f, &st.water);
+    }
     add_current_loads(net, loads, f);
   };
   int snapshot = 0;
@@ -124,8 +134,9 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   auto write_row = [&](double t, long long substeps) {
     std::vector<double> row = {t, static_cast<double>(substeps)};
     loads.time = t;
+    sample_water();
     for (NetState& st : nets) {
-      const Vec3d f = current_force(st.model, loads);
+      const Vec3d f = current_force(st.model, loads, st.water);
       const Vec3d anchor = st.solver->anchor_force(load_function);
       const double q = 0.5 * loads.water_density * speed * speed * st.model.width * st.model.height;
       row.insert(row.end(),
@@ -136,6 +147,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
         st.anchor_sum += anchor;
         ++st.window_samples;
         st.force_min = std::min(st.force_min, dot(f, flow));
+        for (const std::uint8_t wet : st.water.knot_wet) st.wet_in_window |= wet != 0;
         st.force_max = std::max(st.force_max, dot(f, flow));
       }
     }
@@ -156,6 +168,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     const double piece = (t_next - t) / pieces;
     for (int k = 0; k < pieces; ++k) {
       loads.time = t + (k + 0.5) * piece;
+      sample_water();
       for (NetState& st : nets) report.substeps += st.solver->advance(piece, load_function);
     }
     t = t_next;
@@ -231,6 +244,25 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     s.drag_coefficient = q > 0 ? dot(s.mean_force, flow) / q : nan;
     s.max_deflection = max_normal_deflection(st.model, st.initial);
     report.nets.push_back(s);
+    if (spec.waves.given && st.window_samples > 0 && !st.wet_in_window) {
+      report.warnings.push_back(fmt::format(
+          "net '{}': no knot was in the water during the force window (the waves' still level "
+          "is z = {:.4g} m): its forces are those of the sinker bar at most",
+          s.name, spec.waves.still_level));
+    }
+    if (spec.waves.given && spec.waves.train.front_speed > 0) {
+      const WaveSpec& w = spec.waves;
+      const double distance = std::max(0.0, st.model.center.x - w.paddle_x);
+      const double full = distance / w.train.front_speed + w.ramp;
+      if (full > report.window[0]) {
+        report.warnings.push_back(fmt::format(
+            "net '{}': the waves reach their full height there at t = {:.4g} s (their ramp, "
+            "{:.4g} s, from origin_x = {:.4g} m at the group velocity {:.4g} m/s), after the "
+            "force window starts ({:.4g} s): its force range includes the ramp; start the "
+            "window later or lengthen the run",
+            s.name, full, w.ramp, w.paddle_x, w.train.front_speed, report.window[0]));
+      }
+    }
     if (st.window_samples == 0) {
       report.warnings.push_back(fmt::format(
           "net '{}': {}, so its mean force and Cd are not measured (null)", s.name,

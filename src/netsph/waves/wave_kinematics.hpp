@@ -38,8 +38,12 @@ NETSPH_HD double wave_phase(const RegularWave& w, double x, double t) {
 /// / sinh^3 kh (Stokes second order, Dean & Dalrymple 1991). Zero for a linear wave.
 NETSPH_HD double second_order_surface_amplitude(const RegularWave& w) {
   if (w.order < 2) return 0;
-  const double kh = w.k * w.depth, s = std::sinh(kh);
-  return w.height * w.height * w.k / 16 * std::cosh(kh) * (2 + std::cosh(2 * kh)) / (s * s * s);
+  // cosh kh / sinh kh and (2 + cosh 2kh) / sinh^2 kh written with e = exp(-2kh), so that deep
+  // water (cosh overflows past kh = 355) gives the deep-water limit H^2 k / 8 instead of NaN.
+  const double e = std::exp(-2 * w.k * w.depth), one_minus = -std::expm1(-2 * w.k * w.depth);
+  const double coth = (1 + e) / one_minus;
+  const double ratio = (8 * e + 2 + 2 * e * e) / (one_minus * one_minus);
+  return w.height * w.height * w.k / 16 * coth * ratio;
 }
 
 /// The free-surface elevation above the still-water level at x, t, m.
@@ -57,15 +61,25 @@ NETSPH_HD void wave_velocity(const RegularWave& w, double x, double z, double t,
                              double& v_up) {
   const double theta = wave_phase(w, x, t);
   const double sigma = intrinsic_omega(w);
-  const double kh = w.k * w.depth, kz = w.k * (z + w.depth);
-  const double a1 = 0.5 * w.height * sigma / std::sinh(kh);
-  u = w.current + a1 * std::cosh(kz) * std::cos(theta);
-  v_up = a1 * std::sinh(kz) * std::sin(theta);
+  // The depth ratios cosh k(z+h) / sinh kh and sinh k(z+h) / sinh kh as exp(k z) times
+  // factors in exp(-2 k (z+h)) and exp(-2kh), which stay finite in deep water (the plain
+  // hyperbolic functions overflow past kh = 710 and give inf / inf). z + h is kept >= 0: below
+  // the bottom the bottom's value.
+  const double kh = w.k * w.depth, kz = w.k * std::fmax(z + w.depth, 0.0);
+  const double ez = std::exp(-2 * kz), decay = std::exp(kz - kh);
+  const double one_minus_eh = -std::expm1(-2 * kh), one_minus_ez = -std::expm1(-2 * kz);
+  const double a1 = 0.5 * w.height * sigma;
+  const double cosh_ratio = decay * (1 + ez) / one_minus_eh;
+  const double sinh_ratio = decay * one_minus_ez / one_minus_eh;
+  u = w.current + a1 * cosh_ratio * std::cos(theta);
+  v_up = a1 * sinh_ratio * std::sin(theta);
   if (w.order >= 2) {
-    const double s2 = std::sinh(kh) * std::sinh(kh);
-    const double a2 = 3.0 / 16.0 * w.height * w.height * sigma * w.k / (s2 * s2);
-    u += a2 * std::cosh(2 * kz) * std::cos(2 * theta);
-    v_up += a2 * std::sinh(2 * kz) * std::sin(2 * theta);
+    // cosh 2k(z+h) / sinh^4 kh = 8 exp(2k(z+h) - 4kh) (1 + exp(-4k(z+h))) / (1 - exp(-2kh))^4,
+    // and the same with sinh and a minus sign.
+    const double d2 = std::exp(2 * kz - 4 * kh), q = one_minus_eh * one_minus_eh;
+    const double a2 = 3.0 / 16.0 * w.height * w.height * sigma * w.k * 8 * d2 / (q * q);
+    u += a2 * (1 + ez * ez) * std::cos(2 * theta);
+    v_up += a2 * one_minus_ez * (1 + ez) * std::sin(2 * theta);
   }
 }
 

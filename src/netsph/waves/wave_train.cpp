@@ -70,7 +70,8 @@ PaddleMotion train_paddle_motion(PaddleType type, const WaveTrain& train) {
 }
 
 double train_elevation(const WaveTrain& train, double distance, double t) {
-  const double arrival = train.front_speed > 0 ? distance / train.front_speed : 0.0;
+  // Behind the origin (distance < 0) the ramp is the origin's: the waves start there.
+  const double arrival = train.front_speed > 0 ? std::fmax(distance, 0.0) / train.front_speed : 0.0;
   const double ramp = wave_ramp(t - arrival, train.ramp);
   if (!(ramp > 0)) return 0;
   double eta = 0;
@@ -81,7 +82,8 @@ double train_elevation(const WaveTrain& train, double distance, double t) {
 void train_velocity(const WaveTrain& train, double distance, double z, double t, double& u,
                     double& w) {
   u = w = 0;
-  const double arrival = train.front_speed > 0 ? distance / train.front_speed : 0.0;
+  // Behind the origin (distance < 0) the ramp is the origin's: the waves start there.
+  const double arrival = train.front_speed > 0 ? std::fmax(distance, 0.0) / train.front_speed : 0.0;
   const double ramp = wave_ramp(t - arrival, train.ramp);
   if (!(ramp > 0)) return;
   for (const RegularWave& c : train.components) {
