@@ -2,7 +2,7 @@
 // sets the paddle wall's motion from it), the zones that absorb waves, and the gauges that
 // measure them. Same conventions as case_reader.cpp; docs/case-reference.md documents every
 // key. The checks here need only the case; those that need the scene (the first time step, the
-// particles per wave height) are setup/wave_checks.cpp's.
+// particles per wave height) are setup/scene_waves.cpp's.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,11 +22,11 @@ namespace {
 /// spectrum holds no energy to speak of (exp(-5/4 * 16) = 2e-9), above 3 fp about 1% of it.
 constexpr double kJonswapLow = 0.5, kJonswapHigh = 3.0;
 
-/// The paddle's velocity table: at most this many samples (32 B each), and this many
-/// sample-components of work to fill it (a few seconds).
 /// Stokes second order's largest second-order surface, as a fraction of the first order's.
 constexpr double kMaxStokesRatio = 0.25;
 
+/// The paddle's velocity table: at most this many samples (32 B each), and this many
+/// sample-components of work to fill it (a few seconds).
 constexpr double kMaxPaddleSamples = 5e6, kMaxPaddleWork = 5e9;
 
 /// The highest top (surface_z, else the box top) and the lowest bottom of the fills.
