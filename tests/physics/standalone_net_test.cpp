@@ -159,8 +159,9 @@ rigid = true
 // with the sign changed, and the mean over whole periods zero within 1% of the peak.
 TEST(StandaloneNet, RigidNetInWavesFeelsTheSteadyDragOfItsOrbitalVelocity) {
   const std::vector<std::string> wave_keys = {
-      "current.velocity=[0.0, 0.0, 0.0]", "waves={type=\"regular\", height=0.2, period=4.0, "
-                                          "depth=2.0, still_water_level=0.0, ramp=4.0}",
+      "current.velocity=[0.0, 0.0, 0.0]",
+      "waves={type=\"regular\", height=0.2, period=4.0, "
+      "depth=2.0, still_water_level=0.0, ramp=4.0}",
       "simulation.end_time=16.0", "output.force_window=[8.0, 16.0]", "output.series_every=0.01"};
   const CaseSpec in_waves = waves::small_rigid_net(wave_keys);
   ASSERT_TRUE(in_waves.waves.standalone);
@@ -174,9 +175,9 @@ TEST(StandaloneNet, RigidNetInWavesFeelsTheSteadyDragOfItsOrbitalVelocity) {
   opt.out_dir = dir / "waves";
   const NetRunReport wavy = run_standalone_nets(in_waves, opt);
   ASSERT_EQ(wavy.status, "completed");
-  const CaseSpec steady_spec = waves::small_rigid_net(
-      {"current.velocity=[" + std::to_string(u_max) + ", 0.0, 0.0]", "simulation.end_time=0.2",
-       "output.force_window=[0.1, 0.2]"});
+  const CaseSpec steady_spec =
+      waves::small_rigid_net({"current.velocity=[" + std::to_string(u_max) + ", 0.0, 0.0]",
+                              "simulation.end_time=0.2", "output.force_window=[0.1, 0.2]"});
   opt.out_dir = dir / "steady";
   const NetRunReport steady = run_standalone_nets(steady_spec, opt);
   ASSERT_EQ(steady.status, "completed");
@@ -185,8 +186,9 @@ TEST(StandaloneNet, RigidNetInWavesFeelsTheSteadyDragOfItsOrbitalVelocity) {
   const nlohmann::json s = nlohmann::json::parse(in);
   const double f_min = s["nets"][0]["force_range_N"][0], f_max = s["nets"][0]["force_range_N"][1];
   const double f_mean = s["nets"][0]["mean_force_N"][0];
-  std::printf("kh = %.3f, u_max = %.4f m/s: steady drag %.5f N; in waves %.5f .. %.5f N, mean %.2e N\n",
-              kh, u_max, f_steady, f_min, f_max, f_mean);
+  std::printf(
+      "kh = %.3f, u_max = %.4f m/s: steady drag %.5f N; in waves %.5f .. %.5f N, mean %.2e N\n", kh,
+      u_max, f_steady, f_min, f_max, f_mean);
   ASSERT_GT(f_steady, 0.0);
   EXPECT_NEAR(f_max / f_steady, 1.0, 0.01);
   EXPECT_NEAR(-f_min / f_steady, 1.0, 0.01);

@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/run/output_particles.hpp"
 #include "netsph/run/wave_gauges.hpp"
 #include "netsph/setup/scene.hpp"
 #include "netsph/sph/damping_zone.hpp"
@@ -20,8 +23,7 @@ namespace netsph {
 namespace {
 
 CaseSpec flume(const std::vector<std::string>& overrides = {}) {
-  return read_case_file(std::string(NETSPH_CASES_DIR) + "/waves/regular_piston2d.toml",
-                        overrides);
+  return read_case_file(std::string(NETSPH_CASES_DIR) + "/waves/regular_piston2d.toml", overrides);
 }
 
 const WallSpec& paddle_of(const CaseSpec& spec) {
@@ -73,11 +75,10 @@ TEST(WavesCase, PaddleWallFollowsFirstOrderWavemakerTheory) {
 }
 
 TEST(WavesCase, PaddleOnAnXmaxFaceSendsTheWavesTowardsMinusX) {
-  const CaseSpec spec = flume({"wall.1.faces=[\"xmax\"]", "wall.1.min=[-0.3, 0, 0]",
-                               "wall.1.max=[5.9, 0, 0.9]", "wall.0.faces=[\"zmin\", \"xmin\"]",
-                               "wall.0.min=[0, 0, 0]", "wall.0.max=[6.05, 0, 0.9]",
-                               "fill.0.max=[5.9, 0, 0.5]", "damping.0.from=2.4",
-                               "damping.0.to=0.0"});
+  const CaseSpec spec = flume(
+      {"wall.1.faces=[\"xmax\"]", "wall.1.min=[-0.3, 0, 0]", "wall.1.max=[5.9, 0, 0.9]",
+       "wall.0.faces=[\"zmin\", \"xmin\"]", "wall.0.min=[0, 0, 0]", "wall.0.max=[6.05, 0, 0.9]",
+       "fill.0.max=[5.9, 0, 0.5]", "damping.0.from=2.4", "damping.0.to=0.0"});
   EXPECT_EQ(spec.waves.direction, -1);
   EXPECT_DOUBLE_EQ(spec.waves.paddle_x, 5.9);
   // The paddle moves in -x when the wave's crest leaves it (the velocity in phase with eta).
@@ -146,6 +147,29 @@ TEST(WaveGauge, SurfaceIsWhereTheCoverageCrossesOneHalf) {
   EXPECT_TRUE(std::isnan(surface_from_coverage(z, std::vector<double>(z.size(), 0.1))));
   // Water up to the line's top: the top.
   EXPECT_EQ(surface_from_coverage(z, std::vector<double>(z.size(), 1.0)), z.back());
+}
+
+// Without [waves] a gauge measures from the highest fill's surface: still water reads the
+// lattice's surface, which lies within dp/2 of the fill's top (its top row sits dp/2 below it,
+// and the kernel sum crosses 1/2 within a spacing of that row).
+TEST(WaveGauge, WithoutWavesStillWaterReadsNearZero) {
+  const CaseSpec spec = read_case_file(std::string(NETSPH_CASES_DIR) + "/hydrostatic2d.toml",
+                                       {"gauge=[{x=0.5}]"});
+  ASSERT_FALSE(spec.waves.given);
+  Simulation sim(spec);
+  sim.step();  // the samples read the step's neighbour grid, as a run's do
+  const auto dir = std::filesystem::temp_directory_path() / "netsph_gauge_still_water";
+  std::filesystem::create_directories(dir);
+  GaugeRecorder gauges(sim, dir);
+  SimulationParticles particles(sim);
+  gauges.after_step(sim, particles);
+  std::ifstream in(dir / "gauges.csv");
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  EXPECT_EQ(header, "time [s],gauge1 [m]");
+  const double eta = std::stod(row.substr(row.find(',') + 1));
+  EXPECT_LT(std::fabs(eta), 0.5 * spec.simulation.dp) << row;
 }
 
 TEST(WaveGauge, TargetIsTheLinearWaveOnceTheRampHasArrived) {

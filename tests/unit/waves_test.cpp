@@ -11,6 +11,7 @@
 #include "netsph/waves/paddle_motion.hpp"
 #include "netsph/waves/wave_kinematics.hpp"
 #include "netsph/waves/wave_record.hpp"
+#include "netsph/waves/wave_train.hpp"
 #include "netsph/waves/wavemaker_theory.hpp"
 
 namespace netsph {
@@ -316,7 +317,7 @@ TEST(PaddleMotion, VelocityIsTheDisplacementsRate) {
   const JonswapSpec sea{0.05, 1.4};
   const auto components = jonswap_components(sea, 0.3, 2.0, 40, 3);
   for (PaddleType type : {PaddleType::Piston, PaddleType::Flap}) {
-    const PaddleMotion m = irregular_paddle_motion(type, components, 0.5, 3.0, g);
+    const PaddleMotion m = train_paddle_motion(type, irregular_wave_train(components, 0.5, 3.0, g));
     double x0, v0;
     paddle_state(m, 0.0, x0, v0);
     EXPECT_EQ(x0, 0.0);
@@ -347,7 +348,7 @@ TEST(PaddleMotion, OneComponentIsTheRegularWave) {
   w.phase = c.phase;
   for (PaddleType type : {PaddleType::Piston, PaddleType::Flap}) {
     const PaddleMotion a = regular_paddle_motion(type, w, 2.0);
-    const PaddleMotion b = irregular_paddle_motion(type, {c}, h, 2.0, g);
+    const PaddleMotion b = train_paddle_motion(type, irregular_wave_train({c}, h, 2.0, g));
     for (double t : {0.5, 3.3}) {
       double xa, va, xb, vb;
       paddle_state(a, t, xa, va);

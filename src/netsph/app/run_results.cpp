@@ -96,11 +96,12 @@ void log_run_results(const nlohmann::json& summary) {
       target = fmt::format(" ({:.3f} and {:.4f} of the target)", g["height_ratio"].get<double>(),
                            g["period_ratio"].get<double>());
     }
-    spdlog::info("gauge {} over {:.4g}-{:.4g} s: {} waves, mean height {:.4g} m, mean period "
-                 "{:.4g} s{}",
-                 g["name"].get<std::string>(), window[0].get<double>(), window[1].get<double>(),
-                 m["waves"].get<int>(), m["mean_height_m"].get<double>(),
-                 m["mean_period_s"].get<double>(), target);
+    spdlog::info(
+        "gauge {} over {:.4g}-{:.4g} s: {} waves, mean height {:.4g} m, mean period "
+        "{:.4g} s{}",
+        g["name"].get<std::string>(), window[0].get<double>(), window[1].get<double>(),
+        m["waves"].get<int>(), m["mean_height_m"].get<double>(), m["mean_period_s"].get<double>(),
+        target);
   }
 }
 

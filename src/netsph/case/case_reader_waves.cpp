@@ -54,9 +54,10 @@ void CaseReader::read_waves() {
   w.where = r.location();
   const Vec3d g = spec_.fluid.gravity;
   if (!(g.z < 0) || g.x != 0 || g.y != 0) {
-    r.fail_table(fmt::format("waves are gravity waves: they need fluid.gravity = [0, 0, -g] with "
-                             "g > 0, and this case has gravity = {}",
-                             format_vec3(g)));
+    r.fail_table(
+        fmt::format("waves are gravity waves: they need fluid.gravity = [0, 0, -g] with "
+                    "g > 0, and this case has gravity = {}",
+                    format_vec3(g)));
   }
   w.kind = r.choice("type", kWaveKindNames, w.kind);
   if (spec_.net_only()) return read_standalone_waves(r);
@@ -195,21 +196,21 @@ void CaseReader::read_wave_levels(const TomlTableReader& r, const toml::node& ma
   w.still_level = water->surface_z.value_or(water->box.max.z);
   w.depth = w.still_level - water->box.min.z;
   if (!(w.depth > 0)) {
-    r.fail_table(fmt::format("the water in front of the paddle ({}) has no depth: its surface, "
-                             "z = {} m, is not above its bottom, z = {} m",
-                             water->where.str(), format_number(w.still_level),
-                             format_number(water->box.min.z)));
+    r.fail_table(fmt::format(
+        "the water in front of the paddle ({}) has no depth: its surface, "
+        "z = {} m, is not above its bottom, z = {} m",
+        water->where.str(), format_number(w.still_level), format_number(water->box.min.z)));
   }
   // Water behind the paddle would be pushed by its back, making waves of its own.
   for (const FillSpec& f : spec_.fills) {
-    const bool behind = w.direction > 0 ? f.box.min.x < w.paddle_x - 0.5 * dp
-                                        : f.box.max.x > w.paddle_x + 0.5 * dp;
+    const bool behind =
+        w.direction > 0 ? f.box.min.x < w.paddle_x - 0.5 * dp : f.box.max.x > w.paddle_x + 0.5 * dp;
     if (!behind) continue;
-    r.fail_value("wavemaker", maker,
-                 fmt::format("the fill at {} holds water behind the paddle (x {} {} m): a piston "
-                             "has water on one side only; end the fill at the paddle's face",
-                             f.where.str(), w.direction > 0 ? "<" : ">",
-                             format_number(w.paddle_x)));
+    r.fail_value(
+        "wavemaker", maker,
+        fmt::format("the fill at {} holds water behind the paddle (x {} {} m): a piston "
+                    "has water on one side only; end the fill at the paddle's face",
+                    f.where.str(), w.direction > 0 ? "<" : ">", format_number(w.paddle_x)));
   }
 }
 
@@ -218,15 +219,16 @@ void CaseReader::check_paddle_geometry(const TomlTableReader& r, const toml::nod
   const WallSpec& wall = spec_.walls[w.wall];
   const double dp = spec_.simulation.dp;
   const double bottom = w.still_level - w.depth;
-  const double crest = w.still_level + (w.kind == WaveKind::Regular ? w.height : w.jonswap.hs);
+  const double crest = w.still_level + w.reference_height();
   if (wall.box.min.z > bottom + 0.5 * dp || wall.box.max.z < crest) {
-    r.fail_value("wavemaker", maker,
-                 fmt::format("the paddle wall '{}' ({}) spans z from {} to {} m, and a piston "
-                             "must reach from the bottom, z = {} m, to above the crests, z = {:.4g} "
-                             "m (the still water plus the wave height): water would pass under or "
-                             "over it",
-                             wall.name, wall.where.str(), format_number(wall.box.min.z),
-                             format_number(wall.box.max.z), format_number(bottom), crest));
+    r.fail_value(
+        "wavemaker", maker,
+        fmt::format("the paddle wall '{}' ({}) spans z from {} to {} m, and a piston "
+                    "must reach from the bottom, z = {} m, to above the crests, z = {:.4g} "
+                    "m (the still water plus the wave height): water would pass under or "
+                    "over it",
+                    wall.name, wall.where.str(), format_number(wall.box.min.z),
+                    format_number(wall.box.max.z), format_number(bottom), crest));
   }
   if (is_2d()) return;
   for (const FillSpec& f : spec_.fills) {
@@ -248,8 +250,8 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
   const std::string_view kind = name_of(w.kind);
   const std::vector<std::string_view> regular_keys = {"height", "period", "theory"};
   const std::vector<std::string_view> jonswap_keys = {"hs", "tp", "gamma", "seed", "components"};
-  for (const auto& [owner, keys] : {std::pair{WaveKind::Regular, regular_keys},
-                                    std::pair{WaveKind::Jonswap, jonswap_keys}}) {
+  for (const auto& [owner, keys] :
+       {std::pair{WaveKind::Regular, regular_keys}, std::pair{WaveKind::Jonswap, jonswap_keys}}) {
     if (owner == w.kind) continue;
     for (const std::string_view key : keys) {
       if (const toml::node* node = r.find(key)) {
@@ -264,8 +266,8 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
   if (w.kind == WaveKind::Regular) {
     w.height = height = r.required_number("height", NumberRule::positive("m"),
                                           "the wave height H, crest to trough, m");
-    w.period = period = r.required_number("period", NumberRule::positive("s"),
-                                          "the wave period T, s");
+    w.period = period =
+        r.required_number("period", NumberRule::positive("s"), "the wave period T, s");
     w.theory = r.choice("theory", kWaveTheoryNames, w.theory);
     if (period > spec_.simulation.end_time) {
       r.fail_value("period", *r.find("period"),
@@ -275,10 +277,10 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     }
   } else {
     height_key = "hs";
-    w.jonswap.hs = height = r.required_number("hs", NumberRule::positive("m"),
-                                              "the significant wave height Hm0, m");
-    w.jonswap.tp = period = r.required_number("tp", NumberRule::positive("s"),
-                                              "the peak period Tp, s");
+    w.jonswap.hs = height =
+        r.required_number("hs", NumberRule::positive("m"), "the significant wave height Hm0, m");
+    w.jonswap.tp = period =
+        r.required_number("tp", NumberRule::positive("s"), "the peak period Tp, s");
     if (period > spec_.simulation.end_time) {
       r.fail_value("tp", *r.find("tp"),
                    fmt::format("is longer than the run (simulation.end_time = {} s): not one "
@@ -303,23 +305,23 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     k = w.current == 0 ? wave_number(2 * M_PI / period, w.depth, g)
                        : wave_number_on_current(2 * M_PI / period, w.depth, w.current, g);
   } catch (const Error& e) {
-    r.fail_table(fmt::format("the waves cannot exist on this current ([current] velocity x = "
-                             "{} m/s): {}",
-                             format_number(w.current), e.what()));
+    r.fail_table(
+        fmt::format("the waves cannot exist on this current ([current] velocity x = "
+                    "{} m/s): {}",
+                    format_number(w.current), e.what()));
   }
   const double wavelength = 2 * M_PI / k, limit = breaking_steepness(k * w.depth);
   if (height / wavelength > limit) {
-    r.fail_value(height_key, *r.find(height_key),
-                 fmt::format("makes a wave steeper than the breaking limit: H / L = {:.4g} with "
-                             "L = {:.4g} m (T = {} s, depth {} m{}), and a wave breaks above H / "
-                             "L = 0.142 tanh(kh) = {:.4g} (Miche 1944); the highest that does "
-                             "not break is {:.4g} m",
-                             height / wavelength, wavelength, format_number(period),
-                             format_number(w.depth),
-                             w.current == 0 ? std::string()
-                                            : fmt::format(", on a {} m/s current",
-                                                          format_number(w.current)),
-                             limit, limit * wavelength));
+    r.fail_value(
+        height_key, *r.find(height_key),
+        fmt::format("makes a wave steeper than the breaking limit: H / L = {:.4g} with "
+                    "L = {:.4g} m (T = {} s, depth {} m{}), and a wave breaks above H / "
+                    "L = 0.142 tanh(kh) = {:.4g} (Miche 1944); the highest that does "
+                    "not break is {:.4g} m",
+                    height / wavelength, wavelength, format_number(period), format_number(w.depth),
+                    w.current == 0 ? std::string()
+                                   : fmt::format(", on a {} m/s current", format_number(w.current)),
+                    limit, limit * wavelength));
   }
   // Stokes' expansion holds while its second-order surface stays small beside the first
   // order. In shallow water the ratio is 3 H L^2 / (32 pi^2 h^3) = Ur / 105 (Ur = H L^2 / h^3,
@@ -346,15 +348,15 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     } else {
       const double fp = 1 / w.jonswap.tp;
       w.train = irregular_wave_train(
-          jonswap_components(w.jonswap, kJonswapLow * fp, kJonswapHigh * fp, w.components,
-                             w.seed),
+          jonswap_components(w.jonswap, kJonswapLow * fp, kJonswapHigh * fp, w.components, w.seed),
           w.depth, w.ramp, g, w.current);
     }
   } catch (const Error& e) {
     // An opposing current past the blocking speed (standalone waves on a [current]).
-    r.fail_table(fmt::format("the waves cannot exist on this current ([current] velocity x = "
-                             "{} m/s): {}",
-                             format_number(w.current), e.what()));
+    r.fail_table(
+        fmt::format("the waves cannot exist on this current ([current] velocity x = "
+                    "{} m/s): {}",
+                    format_number(w.current), e.what()));
   }
 }
 
@@ -374,12 +376,12 @@ void CaseReader::set_paddle_motion(const TomlTableReader& r) {
         motion.harmonics.size() == 1 ? "" : "s", kMaxPaddleSamples, kMaxPaddleWork,
         w.kind == WaveKind::Jonswap ? " or give fewer components" : ""));
   }
-  const SampledPaddle s = sample_paddle(motion, spec_.simulation.end_time, interval);
+  SampledPaddle s = sample_paddle(motion, spec_.simulation.end_time, interval);
   if (!std::isfinite(s.max_excursion)) {
     r.fail_table("the paddle's motion is not finite: the wave is too long for the water depth");
   }
   w.max_excursion = s.max_excursion;
-  wall.motion.times = s.times;
+  wall.motion.times = std::move(s.times);
   wall.motion.velocities.clear();
   for (const double v : s.velocities) wall.motion.velocities.push_back({w.direction * v, 0, 0});
 
@@ -394,12 +396,12 @@ void CaseReader::set_paddle_motion(const TomlTableReader& r) {
       e, format_number(w.paddle_x), 2 * e);
   const DomainSpec& d = spec_.domain;
   if (d.given && (back < d.min.x || back > d.max.x)) {
-    r.fail_value("wavemaker", maker,
-                 fmt::format("{}; its {} particle layers behind it then reach x = {:.4g} m, "
-                             "outside [domain] (x from {} to {} m): widen the domain behind "
-                             "the paddle",
-                             what, wall.layers, back, format_number(d.min.x),
-                             format_number(d.max.x)));
+    r.fail_value(
+        "wavemaker", maker,
+        fmt::format("{}; its {} particle layers behind it then reach x = {:.4g} m, "
+                    "outside [domain] (x from {} to {} m): widen the domain behind "
+                    "the paddle",
+                    what, wall.layers, back, format_number(d.min.x), format_number(d.max.x)));
   }
   double water = 0;
   for (const FillSpec& f : spec_.fills) water = std::max(water, f.box.max.x - f.box.min.x);
@@ -429,7 +431,7 @@ void CaseReader::set_paddle_motion(const TomlTableReader& r) {
 
 void CaseReader::check_free_surface(const TomlTableReader& r) const {
   const WaveSpec& w = spec_.waves;
-  const double crest = w.still_level + (w.kind == WaveKind::Regular ? w.height : w.jonswap.hs);
+  const double crest = w.still_level + w.reference_height();
   for (const WallSpec& wall : spec_.walls) {
     if (!wall.faces[kZMax] || wall.box.max.z > crest) continue;
     for (const FillSpec& f : spec_.fills) {
@@ -454,7 +456,8 @@ void CaseReader::read_damping() {
     TomlTableReader r(*tables[i], label, label, keys_of("damping"), source_, home_hint);
     DampingSpec z;
     z.where = r.location();
-    if (spec_.fills.empty()) r.fail_table("a damping zone acts on the SPH fluid, and this case has none");
+    if (spec_.fills.empty())
+      r.fail_table("a damping zone acts on the SPH fluid, and this case has none");
     z.name = r.string("name", fmt::format("damping{}", number));
     z.from = r.required_number("from", NumberRule::any("m"), "x where the damping starts, m");
     z.to = r.required_number("to", NumberRule::any("m"),
@@ -482,9 +485,10 @@ void CaseReader::read_damping() {
     } else if (spec_.waves.given) {
       z.rate = default_damping_rate(spec_.waves, length, -spec_.fluid.gravity.z);
     } else {
-      r.fail_table(fmt::format("{} needs its rate (1/s): without [waves] there is no wave to "
-                               "derive it from",
-                               label));
+      r.fail_table(
+          fmt::format("{} needs its rate (1/s): without [waves] there is no wave to "
+                      "derive it from",
+                      label));
     }
     check_damping_clear_of_paddle(r, z);
     spec_.damping.push_back(z);
@@ -531,7 +535,8 @@ void CaseReader::read_gauges() {
     TomlTableReader r(*tables[i], label, label, keys_of("gauge"), source_, home_hint);
     GaugeSpec gauge;
     gauge.where = r.location();
-    if (spec_.fills.empty()) r.fail_table("a wave gauge measures the SPH fluid, and this case has none");
+    if (spec_.fills.empty())
+      r.fail_table("a wave gauge measures the SPH fluid, and this case has none");
     gauge.name = r.string("name", fmt::format("gauge{}", number));
     if (!plain_file_name(gauge.name)) {
       r.fail_value("name", *r.find("name"),
@@ -547,10 +552,10 @@ void CaseReader::read_gauges() {
     }
     for (const GaugeSpec& other : spec_.gauges) {
       if (other.name != gauge.name) continue;
-      const std::string message =
-          fmt::format("gauge name \"{}\" is used twice: by {} and {}{}; gauge names must be "
-                      "unique (each heads a column of gauges.csv)",
-                      gauge.name, other.where.str(), label, r.has("name") ? "" : " (its default)");
+      const std::string message = fmt::format(
+          "gauge name \"{}\" is used twice: by {} and {}{}; gauge names must be "
+          "unique (each heads a column of gauges.csv)",
+          gauge.name, other.where.str(), label, r.has("name") ? "" : " (its default)");
       if (const toml::node* name = r.find("name")) r.fail_value("name", *name, message);
       r.fail_table(message);
     }
@@ -563,10 +568,8 @@ void CaseReader::read_gauges() {
     }
     check_gauge_position(r, gauge);
     gauge.z_min = fills.bottom;
-    const double above = spec_.waves.given
-                             ? 2 * (spec_.waves.kind == WaveKind::Regular ? spec_.waves.height
-                                                                          : spec_.waves.jonswap.hs)
-                             : 0.5 * (fills.top - fills.bottom);
+    const double above =
+        spec_.waves.given ? 2 * spec_.waves.reference_height() : 0.5 * (fills.top - fills.bottom);
     gauge.z_max = spec_.domain.given ? spec_.domain.max.z : fills.top + above;
     spec_.gauges.push_back(gauge);
   }
@@ -596,7 +599,8 @@ void CaseReader::check_gauge_position(const TomlTableReader& r, const GaugeSpec&
     for (const int axis : {0, 1}) {
       if (axis == 1 && is_2d()) continue;
       const int other = 1 - axis;
-      const bool across = is_2d() || (at[other] >= w.box.min[other] && at[other] <= w.box.max[other]);
+      const bool across =
+          is_2d() || (at[other] >= w.box.min[other] && at[other] <= w.box.max[other]);
       if (!across) continue;
       const double thick = w.layers * dp;
       const std::string_view k = keys[static_cast<std::size_t>(axis)];
@@ -605,11 +609,12 @@ void CaseReader::check_gauge_position(const TomlTableReader& r, const GaugeSpec&
         const double face = side == 0 ? w.box.min[axis] : w.box.max[axis];
         const double out = side == 0 ? face - at[axis] : at[axis] - face;  // > 0: in the layers
         if (out > 0 && out < thick) {
-          r.fail_value(k, *r.find(k),
-                       fmt::format("lies in wall '{}' ({}): its particle layers span {} from {:.4g} "
-                                   "to {:.4g} m; put the gauge in the water",
-                                   w.name, w.where.str(), k, side == 0 ? face - thick : face,
-                                   side == 0 ? face : face + thick));
+          r.fail_value(
+              k, *r.find(k),
+              fmt::format("lies in wall '{}' ({}): its particle layers span {} from {:.4g} "
+                          "to {:.4g} m; put the gauge in the water",
+                          w.name, w.where.str(), k, side == 0 ? face - thick : face,
+                          side == 0 ? face : face + thick));
         }
         if (out <= 0 && -out < support + travel) {
           r.fail_value(k, *r.find(k),

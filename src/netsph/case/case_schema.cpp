@@ -75,8 +75,8 @@ const std::vector<TableKeys>& schema() {
       {"gauge", {"name", "x", "y"}},
       {"current", {"velocity", "model", "screen", "normal_drag", "tangential_drag"}},
       {"output",
-       {"snapshots", "snapshot_every", "series_every", "checkpoint_every", "gauge_every", "force_window",
-        "snapshot_region"}},
+       {"snapshots", "snapshot_every", "series_every", "checkpoint_every", "gauge_every",
+        "force_window", "snapshot_region"}},
   };
   return tables;
 }
@@ -91,8 +91,8 @@ const std::vector<std::string_view>& keys_of(std::string_view table) {
 
 std::string header_of(std::string_view table) {
   const bool is_array = table == "fill" || table == "wall" || table == "inlet" ||
-                        table == "outlet" || table == "body" || table == "net" || table == "probe" ||
-                        table == "damping" || table == "gauge";
+                        table == "outlet" || table == "body" || table == "net" ||
+                        table == "probe" || table == "damping" || table == "gauge";
   return is_array ? fmt::format("[[{}]]", table) : fmt::format("[{}]", table);
 }
 

@@ -29,9 +29,7 @@ Vec3d VelocityHistory::at(double t) const {
 }
 
 double WaveSpec::reference_wavelength() const {
-  const RegularWave* tallest = nullptr;
-  for (const RegularWave& c : train.components)
-    if (!tallest || c.height > tallest->height) tallest = &c;
+  const RegularWave* tallest = tallest_component(train);
   return tallest ? 2 * M_PI / tallest->k : 0.0;
 }
 

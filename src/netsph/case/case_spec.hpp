@@ -299,10 +299,10 @@ struct WaveSpec {
   bool given = false;
   WaveKind kind = WaveKind::Regular;
   PaddleType paddle = PaddleType::Piston;
-  std::string wavemaker;     ///< the name of the [[wall]] that is the paddle
-  std::size_t wall = 0;      ///< its index in CaseSpec::walls
-  double height = 0;         ///< regular: H, m
-  double period = 0;         ///< regular: T, s
+  std::string wavemaker;  ///< the name of the [[wall]] that is the paddle
+  std::size_t wall = 0;   ///< its index in CaseSpec::walls
+  double height = 0;      ///< regular: H, m
+  double period = 0;      ///< regular: T, s
   WaveTheory theory = WaveTheory::Linear;
   JonswapSpec jonswap;       ///< jonswap: hs, tp, gamma
   std::uint64_t seed = 1;    ///< jonswap: the random phases' seed
@@ -320,6 +320,8 @@ struct WaveSpec {
 
   /// The period that sets the time scales (ramp, gauge sampling): T or Tp, s.
   double reference_period() const { return kind == WaveKind::Regular ? period : jonswap.tp; }
+  /// The height that sets the crests and the resolution: H or Hs, m.
+  double reference_height() const { return kind == WaveKind::Regular ? height : jonswap.hs; }
   /// The wavelength of the tallest component, m.
   double reference_wavelength() const;
   /// The target elevation above the still-water level at x (m), time t (s): train_elevation
@@ -333,11 +335,11 @@ struct WaveSpec {
 /// current), graded smoothly along x from nothing at `from` to `rate` at `to` and beyond
 /// (sph/damping_zone.hpp): a numerical beach that absorbs the waves arriving at it.
 struct DampingSpec {
-  std::string name;   ///< default "damping<N>"
-  double from = 0;    ///< x where the damping starts, m
-  double to = 0;      ///< x where it reaches `rate` (beyond: `rate` too), m
-  double rate = 0;    ///< relaxation rate, 1/s
-  Vec3d velocity{};   ///< m/s
+  std::string name;  ///< default "damping<N>"
+  double from = 0;   ///< x where the damping starts, m
+  double to = 0;     ///< x where it reaches `rate` (beyond: `rate` too), m
+  double rate = 0;   ///< relaxation rate, 1/s
+  Vec3d velocity{};  ///< m/s
   SourceLocation where;
 };
 

@@ -1,7 +1,7 @@
 #include "netsph/run/standalone_net_run.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -116,11 +116,11 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   auto sample_water = [&] {
     for (NetState& st : nets) sample_net_water(st.model, loads, st.water);
   };
-  auto load_function = [&](const NetModel& net, std::vector<Vec3d>& f) {
-    for (const NetState& st : nets) {
-      if (&st.model == &net) return add_current_loads(net, loads, f, &st.water);
-    }
-    add_current_loads(net, loads, f);
+  // Each net's loads with that net's water.
+  auto loads_of = [&](const NetState& st) {
+    return [&](const NetModel& net, std::vector<Vec3d>& f) {
+      add_current_loads(net, loads, f, &st.water);
+    };
   };
   int snapshot = 0;
   auto write_snapshot = [&](double t) {
@@ -137,7 +137,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     sample_water();
     for (NetState& st : nets) {
       const Vec3d f = current_force(st.model, loads, st.water);
-      const Vec3d anchor = st.solver->anchor_force(load_function);
+      const Vec3d anchor = st.solver->anchor_force(loads_of(st));
       const double q = 0.5 * loads.water_density * speed * speed * st.model.width * st.model.height;
       row.insert(row.end(),
                  {f.x, f.y, f.z, anchor.x, anchor.y, anchor.z, q > 0 ? dot(f, flow) / q : 0.0,
@@ -169,7 +169,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     for (int k = 0; k < pieces; ++k) {
       loads.time = t + (k + 0.5) * piece;
       sample_water();
-      for (NetState& st : nets) report.substeps += st.solver->advance(piece, load_function);
+      for (NetState& st : nets) report.substeps += st.solver->advance(piece, loads_of(st));
     }
     t = t_next;
     bool ok = true;
@@ -215,7 +215,7 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
   if (spec.waves.given) {
     const WaveSpec& w = spec.waves;
     j["waves"] = {{"type", name_of(w.kind)},
-                  {"height_m", w.kind == WaveKind::Regular ? w.height : w.jonswap.hs},
+                  {"height_m", w.reference_height()},
                   {"period_s", w.reference_period()},
                   {"depth_m", w.depth},
                   {"wavelength_m", w.reference_wavelength()},
@@ -281,10 +281,9 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
                          {"mean_anchor_force_N",
                           {s.mean_anchor_force.x, s.mean_anchor_force.y, s.mean_anchor_force.z}},
                          {"drag_N", dot(s.mean_force, flow)},
-                         {"force_range_N",
-                          st.window_samples > 0
-                              ? nlohmann::json::array({st.force_min, st.force_max})
-                              : nlohmann::json(nullptr)},
+                         {"force_range_N", st.window_samples > 0
+                                               ? nlohmann::json::array({st.force_min, st.force_max})
+                                               : nlohmann::json(nullptr)},
                          {"Cd_outline", s.drag_coefficient},
                          {"max_deflection_m", s.max_deflection},
                          {"window_samples", st.window_samples}});

@@ -40,29 +40,31 @@ void read_back(const std::filesystem::path& file, std::vector<double>& times,
 nlohmann::json record_json(const WaveRecordSummary& s) {
   // No complete wave: nothing to report (null, not zeros that read as a flat sea).
   if (s.waves.empty()) {
-    return {{"waves", 0},          {"mean_level_m", nullptr},  {"mean_height_m", nullptr},
-            {"mean_period_s", nullptr}, {"h_third_m", nullptr}, {"mean_crest_m", nullptr},
-            {"mean_trough_m", nullptr}, {"max_crest_m", nullptr}, {"max_trough_m", nullptr}};
+    return {{"waves", 0},
+            {"mean_level_m", nullptr},
+            {"mean_height_m", nullptr},
+            {"mean_period_s", nullptr},
+            {"h_third_m", nullptr},
+            {"mean_crest_m", nullptr},
+            {"mean_trough_m", nullptr},
+            {"max_crest_m", nullptr},
+            {"max_trough_m", nullptr}};
   }
   double max_crest = 0, max_trough = 0;
   for (const RecordWave& w : s.waves) {
     max_crest = std::max(max_crest, w.crest);
     max_trough = std::max(max_trough, w.trough);
   }
-  return {{"waves", s.waves.size()},
-          {"mean_level_m", s.mean_level},
-          {"mean_height_m", s.mean_height},
-          {"mean_period_s", s.mean_period},
-          {"h_third_m", s.h_third},
-          {"mean_crest_m", s.mean_crest},
-          {"mean_trough_m", s.mean_trough},
-          {"max_crest_m", max_crest},
+  return {{"waves", s.waves.size()},        {"mean_level_m", s.mean_level},
+          {"mean_height_m", s.mean_height}, {"mean_period_s", s.mean_period},
+          {"h_third_m", s.h_third},         {"mean_crest_m", s.mean_crest},
+          {"mean_trough_m", s.mean_trough}, {"max_crest_m", max_crest},
           {"max_trough_m", max_trough}};
 }
 
 /// The record without its NaN samples (a gauge that found no water then).
-WaveRecordSummary analyse(const std::vector<double>& t, const std::vector<double>& eta,
-                          double from, double to) {
+WaveRecordSummary analyse(const std::vector<double>& t, const std::vector<double>& eta, double from,
+                          double to) {
   std::vector<double> tt, ee;
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (t[k] < from || t[k] > to || !std::isfinite(eta[k])) continue;
@@ -95,6 +97,13 @@ GaugeRecorder::GaugeRecorder(const Simulation& sim, const std::filesystem::path&
     : file_(dir / "gauges.csv"), spec_(&sim.spec()) {
   const CaseSpec& spec = sim.spec();
   if (spec.gauges.empty()) return;
+  if (spec.waves.given) {
+    still_level_ = spec.waves.still_level;
+  } else {
+    still_level_ = -std::numeric_limits<double>::infinity();
+    for (const FillSpec& f : spec.fills)
+      still_level_ = std::max(still_level_, f.surface_z.value_or(f.box.max.z));
+  }
   const double dz = spec.simulation.dp / 4;
   std::vector<CsvColumn> columns{{"time", "s"}};
   for (const GaugeSpec& g : spec.gauges) {
@@ -137,45 +146,42 @@ void GaugeRecorder::after_step(const Simulation& sim, OutputParticles& particles
   if (gauges_.empty() || !schedule_.take(schedule_time(sim.time()))) return;
   particles.sample(all_points_, values_);
   const double t = sim.time();
-  std::vector<double> row{t};
+  row_.assign(1, t);
   std::size_t offset = 0;
-  std::vector<double> coverage;
   for (Gauge& g : gauges_) {
-    coverage.resize(g.points.size());
-    for (std::size_t k = 0; k < g.points.size(); ++k) coverage[k] = values_[offset + k].coverage;
+    coverage_.resize(g.points.size());
+    for (std::size_t k = 0; k < g.points.size(); ++k) coverage_[k] = values_[offset + k].coverage;
     offset += g.points.size();
-    const double eta = surface_from_coverage(g.z, coverage) - spec_->waves.still_level;
+    const double eta = surface_from_coverage(g.z, coverage_) - still_level_;
     g.eta.push_back(eta);
-    row.push_back(eta);
+    row_.push_back(eta);
     if (spec_->waves.given) {
       const double target = spec_->waves.target_elevation(g.spec.x, t);
       g.target.push_back(target);
-      row.push_back(target);
+      row_.push_back(target);
     }
   }
   times_.push_back(t);
-  csv_->append(row);
+  csv_->append(row_);
 }
 
 nlohmann::json GaugeRecorder::summary() const {
   nlohmann::json out = nlohmann::json::array();
   const std::array<double, 2> window = force_window(*spec_);
   for (const Gauge& g : gauges_) {
-    nlohmann::json j = {{"name", g.spec.name},
-                        {"x_m", g.spec.x},
-                        {"y_m", g.spec.y},
-                        {"samples", times_.size()},
-                        {"file", "gauges.csv"},
-                        {"window_s", {window[0], window[1]}}};
+    nlohmann::json j = {{"name", g.spec.name},  {"x_m", g.spec.x},
+                        {"y_m", g.spec.y},      {"samples", times_.size()},
+                        {"file", "gauges.csv"}, {"window_s", {window[0], window[1]}}};
     const WaveRecordSummary measured = analyse(times_, g.eta, window[0], window[1]);
     j["measured"] = record_json(measured);
     if (measured.waves.empty()) {
       const double last = times_.empty() ? 0.0 : times_.back();
-      j["note"] = last < window[1]
-                      ? fmt::format("no complete wave in the window: the record ends at {:.6g} s",
-                                    last)
-                      : std::string("no complete wave in the window (fewer than two "
-                                    "up-crossings, or no water at the gauge)");
+      j["note"] =
+          last < window[1]
+              ? fmt::format("no complete wave in the window: the record ends at {:.6g} s", last)
+              : std::string(
+                    "no complete wave in the window (fewer than two "
+                    "up-crossings, or no water at the gauge)");
     }
     if (spec_->waves.given) {
       const WaveRecordSummary target = analyse(times_, g.target, window[0], window[1]);

@@ -65,12 +65,16 @@ class GaugeRecorder {
   };
   std::filesystem::path file_;
   const CaseSpec* spec_ = nullptr;
+  /// The still-water level the elevations are measured from: [waves]'s, else the highest
+  /// fill's surface.
+  double still_level_ = 0;
   std::vector<Gauge> gauges_;
   std::vector<double> times_;
   std::unique_ptr<CsvSeries> csv_;
   OutputSchedule schedule_;
   std::vector<Vec3d> all_points_;
   std::vector<ShepardValue> values_;
+  std::vector<double> coverage_, row_;  ///< a sample's scratch, kept between samples
 };
 
 }  // namespace netsph

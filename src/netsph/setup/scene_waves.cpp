@@ -32,7 +32,7 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
   if (!w.given) return;
   const double dp = spec.simulation.dp;
   const bool regular = w.kind == WaveKind::Regular;
-  const double height = regular ? w.height : w.jonswap.hs;
+  const double height = w.reference_height();
   const double period = w.reference_period();
   // The first step: the fluid at rest under gravity (force limit) or the acoustic limit.
   TimeStepInputs at_rest;

@@ -443,10 +443,9 @@ std::vector<ValidationRow> table2_reduced(const ValidationContext& ctx) {
 std::vector<ValidationRow> waves_regular(const ValidationContext& ctx) {
   std::vector<ValidationRow> rows;
   for (const double dp : {0.02, 0.01}) {
-    const nlohmann::json s =
-        ctx.run_case("waves/regular_piston2d",
-                     {fmt::format("simulation.dp={}", dp), "output.snapshots=false"},
-                     fmt::format("dp{:.0f}mm", dp * 1000));
+    const nlohmann::json s = ctx.run_case(
+        "waves/regular_piston2d", {fmt::format("simulation.dp={}", dp), "output.snapshots=false"},
+        fmt::format("dp{:.0f}mm", dp * 1000));
     const std::string note = fmt::format(
         "kh = 1.5, H/L = 0.029, dp = {} mm ({:.0f} particles per H), zero up-crossing over "
         "5.5-10.5 s; 'paper' = first-order wavemaker theory",

@@ -6,14 +6,15 @@
 // phase with the paddle's velocity (the evanescent modes take the rest of the paddle's flow,
 // in quadrature: Dean & Dalrymple 1991, sec. 6.3), so the paddle moves as
 // X(t) = (S/2) sin(omega t - phase). For a flap, X is the excursion at the still-water level.
-// Host functions: a moving wall's velocity is evaluated once per step per wall.
+// An irregular sea moves it as the sum of its components' motions (wave_train.hpp:
+// train_paddle_motion). Host functions: a moving wall's velocity is evaluated once per step
+// per wall.
 #include <array>
 #include <cstdint>
 #include <string_view>
 #include <vector>
 
 #include "netsph/core/enum_names.hpp"
-#include "netsph/waves/irregular_waves.hpp"
 #include "netsph/waves/wave_kinematics.hpp"
 #include "netsph/waves/wavemaker_theory.hpp"
 
@@ -51,12 +52,6 @@ inline PaddleMotion regular_paddle_motion(PaddleType type, const RegularWave& w,
   const double kh = w.k * w.depth;
   return {{{w.height / paddle_height_to_stroke(type, kh), w.omega, w.phase}}, ramp};
 }
-
-/// The paddle motion that makes the irregular sea `components` in still water of depth
-/// `depth` (each component's stroke from its own wave number: the random-phase method applied
-/// to the paddle; Dean & Dalrymple 1991, sec. 6.3, superposed). `g` as for wave_number.
-PaddleMotion irregular_paddle_motion(PaddleType type, const std::vector<WaveComponent>& components,
-                                     double depth, double ramp, double g);
 
 /// The paddle's displacement X(t), m, and velocity dX/dt, m/s (the ramp's own rate included,
 /// so that the velocity is the displacement's derivative).

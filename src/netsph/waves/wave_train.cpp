@@ -11,12 +11,9 @@ namespace {
 
 /// The group velocity of the tallest component in the earth frame (relative to the water,
 /// plus the current that carries it).
-double tallest_group_velocity(const std::vector<RegularWave>& components, double g) {
-  const RegularWave* tallest = nullptr;
-  for (const RegularWave& c : components)
-    if (!tallest || c.height > tallest->height) tallest = &c;
-  return tallest ? relative_group_velocity(tallest->k, tallest->depth, g) + tallest->current
-                 : 0.0;
+double tallest_group_velocity(const WaveTrain& train, double g) {
+  const RegularWave* tallest = tallest_component(train);
+  return tallest ? relative_group_velocity(tallest->k, tallest->depth, g) + tallest->current : 0.0;
 }
 
 /// The wave number of angular frequency omega on the current (still water: U = 0).
@@ -26,6 +23,13 @@ double wave_number_for(double omega, double depth, double current, double g) {
 }
 
 }  // namespace
+
+const RegularWave* tallest_component(const WaveTrain& train) {
+  const RegularWave* tallest = nullptr;
+  for (const RegularWave& c : train.components)
+    if (!tallest || c.height > tallest->height) tallest = &c;
+  return tallest;
+}
 
 WaveTrain regular_wave_train(double height, double period, double depth, int order, double ramp,
                              double g, double current) {
@@ -37,7 +41,7 @@ WaveTrain regular_wave_train(double height, double period, double depth, int ord
   w.current = current;
   w.order = order;
   WaveTrain train{{w}, ramp, 0};
-  train.front_speed = tallest_group_velocity(train.components, g);
+  train.front_speed = tallest_group_velocity(train, g);
   return train;
 }
 
@@ -56,7 +60,7 @@ WaveTrain irregular_wave_train(const std::vector<WaveComponent>& components, dou
     w.phase = c.phase;
     train.components.push_back(w);
   }
-  train.front_speed = tallest_group_velocity(train.components, g);
+  train.front_speed = tallest_group_velocity(train, g);
   return train;
 }
 

@@ -7,6 +7,7 @@
 // Host functions: set-up and output work, not per-particle work.
 #include <vector>
 
+#include "netsph/waves/irregular_waves.hpp"
 #include "netsph/waves/paddle_motion.hpp"
 #include "netsph/waves/wave_kinematics.hpp"
 
@@ -22,6 +23,9 @@ struct WaveTrain {
   /// Dalrymple 1991, sec. 4.4), plus the current that carries it.
   double front_speed = 0;
 };
+
+/// The component with the largest height (the first of equals); null for an empty train.
+const RegularWave* tallest_component(const WaveTrain& train);
 
 /// A train of one regular wave of height H (m) and period T (s, in the earth frame) in water of
 /// depth h (m), to first order (order 1) or with the Stokes second-order surface (order 2),
