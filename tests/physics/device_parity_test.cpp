@@ -155,6 +155,16 @@ TEST(DeviceParity, HostWaveFlumeWithPaddleAndDampingMatchesTheCpuBackend) {
   expect_parity(compare("waves/regular_piston2d.toml", kWaveFlume, 200, StepBackend::HostDevice));
 }
 
+// Waves on a current: an inlet and an outlet, and a relaxation zone whose target velocity (the
+// current plus the wave's orbital velocity) moves with the particle's place and the time, at
+// full height from the first step (no ramp), and a damping zone back to the current.
+const std::vector<std::string> kWavesOnACurrent = {"simulation.dp=0.04", "waves.ramp=0.0"};
+
+TEST(DeviceParity, HostWavesOnACurrentFromARelaxationZoneMatchesTheCpuBackend) {
+  expect_parity(
+      compare("waves/current_following2d.toml", kWavesOnACurrent, 200, StepBackend::HostDevice));
+}
+
 // The same comparisons with every launch's threads visited in reverse and in shuffled order
 // (and, always, uninitialised device memory as 0xFF bytes: host_exec.hpp), as a GPU runs them
 // in no fixed order: a kernel in which one particle reads what another writes in the same
@@ -524,6 +534,12 @@ TEST(DeviceParity, CudaDfgCylinderMatchesTheCpuBackend) {
 TEST(DeviceParity, CudaWaveFlumeWithPaddleAndDampingMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
   expect_parity(compare("waves/regular_piston2d.toml", kWaveFlume, 200, StepBackend::Cuda));
+}
+
+TEST(DeviceParity, CudaWavesOnACurrentFromARelaxationZoneMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(
+      compare("waves/current_following2d.toml", kWavesOnACurrent, 200, StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {

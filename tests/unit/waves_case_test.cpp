@@ -18,6 +18,7 @@
 #include "netsph/sph/damping_zone.hpp"
 #include "netsph/waves/dispersion.hpp"
 #include "netsph/waves/wave_train.hpp"
+#include "netsph/waves/wavemaker_theory.hpp"
 
 namespace netsph {
 namespace {
@@ -88,6 +89,35 @@ TEST(WavesCase, PaddleOnAnXmaxFaceSendsTheWavesTowardsMinusX) {
   EXPECT_GT(spec.waves.target_elevation(5.9, t), 0.0);
 }
 
+// theory = "stokes2" makes the paddle second order unless the case says otherwise: the paddle
+// wall's velocity then carries Madsen's second harmonic (the difference from the first-order
+// paddle is that harmonic's velocity, to the table's sampling error).
+TEST(WavesCase, StokesWaveIsGeneratedToSecondOrderByDefault) {
+  const CaseSpec linear = flume();
+  EXPECT_EQ(linear.waves.generation, PaddleGeneration::FirstOrder);
+  const CaseSpec stokes = flume({"waves.theory=\"stokes2\""});
+  EXPECT_EQ(stokes.waves.generation, PaddleGeneration::SecondOrder);
+  const CaseSpec forced =
+      flume({"waves.theory=\"stokes2\"", "waves.generation=\"first_order\""});
+  EXPECT_EQ(forced.waves.generation, PaddleGeneration::FirstOrder);
+  const WaveSpec& w = stokes.waves;
+  const RegularWave& c = w.train.components.front();
+  const double a2 = piston_second_order_amplitude(c.height, c.k * c.depth, c.depth);
+  ASSERT_NE(a2, 0.0);
+  const VelocityHistory& second = paddle_of(stokes).motion;
+  const VelocityHistory& first = paddle_of(forced).motion;
+  for (double t = 3 * w.period; t < stokes.simulation.end_time; t += 0.0713) {
+    const double expected = 2 * c.omega * a2 * std::cos(2 * c.omega * t - 2 * c.phase);
+    // Each table interpolates linearly between samples a hundredth of its fastest harmonic's
+    // period apart (T / 100 first order, T / 200 second): the error is at most (2 pi / 100)^2
+    // / 8 of a harmonic's velocity amplitude.
+    const double tolerance = std::pow(2 * M_PI / 100, 2) / 8 *
+                             (std::fabs(2 * c.omega * a2) + c.omega * 0.5 *
+                              c.height / piston_height_to_stroke(c.k * c.depth));
+    EXPECT_NEAR(second.at(t).x - first.at(t).x, expected, tolerance) << "t = " << t;
+  }
+}
+
 TEST(WavesCase, DampingRateDefaultsToARoundTripOfOnePercent) {
   const CaseSpec spec = flume();
   ASSERT_EQ(spec.damping.size(), 1u);
@@ -120,15 +150,56 @@ TEST(DampingZone, GradesQuadraticallyAndRelaxesExactly) {
   EXPECT_EQ(damping_rate(back, 4.5), 0.0);
   // Two steps of dt relax as one of 2 dt (the exact exponential, any dt).
   Vec3f a{1.0f, 0.0f, -0.5f}, b = a;
-  damp_velocity(z, 3.0, 0.1, a);
-  damp_velocity(z, 3.0, 0.1, a);
-  damp_velocity(z, 3.0, 0.2, b);
+  damp_velocity(z, Vec3d{3.0, 0, 0.2}, 0.0, 0.1, a);
+  damp_velocity(z, Vec3d{3.0, 0, 0.2}, 0.0, 0.1, a);
+  damp_velocity(z, Vec3d{3.0, 0, 0.2}, 0.0, 0.2, b);
   EXPECT_NEAR(a.x, b.x, 1e-6);
   EXPECT_NEAR(a.x, 0.2 + 0.8 * std::exp(-2.5 * 0.2), 1e-6);
   EXPECT_NEAR(a.z, -0.5 * std::exp(-2.5 * 0.2), 1e-6);
   Vec3f outside{1.0f, 0.0f, 0.0f};
-  damp_velocity(z, 1.0, 0.1, outside);
+  damp_velocity(z, Vec3d{1.0, 0, 0.2}, 0.0, 0.1, outside);
   EXPECT_EQ(outside.x, 1.0f);
+}
+
+// A relaxation wavemaker on an inlet's current: the wave rides the inlet's 0.2 m/s, its wave
+// number solves the Doppler-shifted relation, its origin is the zone's end, and the scene's
+// first damping zone relaxes towards the current plus the wave's orbital velocity there.
+TEST(WavesCase, RelaxationZoneMakesWavesOnTheInletsCurrent) {
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_CASES_DIR) + "/waves/current_following2d.toml");
+  const WaveSpec& w = spec.waves;
+  ASSERT_TRUE(w.relaxation);
+  EXPECT_FALSE(w.has_paddle());
+  EXPECT_EQ(w.direction, 1);
+  EXPECT_DOUBLE_EQ(w.current, 0.2);
+  EXPECT_DOUBLE_EQ(w.paddle_x, 2.5);
+  EXPECT_DOUBLE_EQ(w.depth, 0.5);
+  const RegularWave& c = w.train.components.front();
+  const double sigma = c.omega - c.k * 0.2;
+  EXPECT_NEAR(sigma * sigma, kStandardGravity * c.k * std::tanh(c.k * 0.5), 1e-10);
+  EXPECT_LT(c.k, wave_number(c.omega, 0.5));  // a following current lengthens the wave
+  EXPECT_GT(w.relaxation_rate, 0.0);
+  const Scene scene = build_scene(spec);
+  ASSERT_GE(scene.damping.size(), 2u);
+  const DampingZone& z = scene.damping.front();
+  EXPECT_EQ(z.from, 2.5);  // s = 0 where the waves leave
+  EXPECT_EQ(z.to, 0.1);    // full where the fluid follows the wave
+  EXPECT_FLOAT_EQ(z.velocity.x, 0.2f);
+  // After the ramp: the target is the current plus the orbital velocity (Airy, on the current:
+  // amplitudes with the intrinsic frequency).
+  const double t = 5.3, x = 1.2, zc = 0.4;  // 0.1 m below the still water
+  const Vec3f target = damping_target(z, Vec3d{x, 0, zc}, t);
+  const double theta = c.k * (x - 2.5) - c.omega * t + c.phase;
+  // The bed is at z = 0, so k (z' + h) = k zc with z' = zc - 0.5 from the still water.
+  const double kh = c.k * 0.5, a = 0.5 * c.height;
+  const double u = a * sigma * std::cosh(c.k * zc) / std::sinh(kh) * std::cos(theta);
+  const double wv = a * sigma * std::sinh(c.k * zc) / std::sinh(kh) * std::sin(theta);
+  EXPECT_NEAR(target.x, 0.2 + u, 1e-6);
+  EXPECT_NEAR(target.z, wv, 1e-6);
+  // Before the waves start, the target is the current alone.
+  const Vec3f at_rest = damping_target(z, Vec3d{x, 0, zc}, 0.0);
+  EXPECT_EQ(at_rest.x, 0.2f);
+  EXPECT_EQ(at_rest.z, 0.0f);
 }
 
 TEST(WaveGauge, SurfaceIsWhereTheCoverageCrossesOneHalf) {

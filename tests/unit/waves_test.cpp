@@ -361,6 +361,73 @@ TEST(PaddleMotion, OneComponentIsTheRegularWave) {
             regular_paddle_motion(PaddleType::Piston, w, 0).harmonics[0].stroke);
 }
 
+// Madsen's second-order piston correction against an independent derivation: the paddle's
+// second-order volume flux, X2' h + d(X1 eta1)/dt at 2 omega (the moving face's flux, carried
+// to x = 0), equal to the Stokes bound harmonic's flux omega a2 / k (from continuity), with the
+// progressive mode only, gives A2 = H^2 / (32 h) (cosh kh (2 + cosh 2kh) / sinh^3 kh - 4 / m1).
+// The two agree as kh -> 0, their difference 0.22 (kh)^4 of A2 (series expansion), and both
+// tend to 3 H^2 / (32 k^3 h^4), the stroke that makes the bound harmonic alone, with relative
+// error (2/3) (kh)^2.
+TEST(SecondOrderGeneration, MadsenCorrectionIsTheShallowWaterFluxBalance) {
+  const double h = 0.5, height = 0.01;
+  for (double kh : {0.02, 0.05, 0.1, 0.2}) {
+    const double k = kh / h, m1 = piston_height_to_stroke(kh);
+    const double a2 = piston_second_order_amplitude(height, kh, h);
+    const double flux = height * height / (32 * h) *
+                        (std::cosh(kh) * (2 + std::cosh(2 * kh)) / std::pow(std::sinh(kh), 3) -
+                         4 / m1);
+    EXPECT_NEAR(a2, flux, 0.3 * std::pow(kh, 4) * a2) << "kh " << kh;
+    const double shallow = 3 * height * height / (32 * std::pow(k, 3) * std::pow(h, 4));
+    EXPECT_NEAR(a2, shallow, 0.7 * kh * kh * shallow) << "kh " << kh;
+    EXPECT_GT(a2, 0.0);
+  }
+  // Deep water: no bound term, -H^2 / (32 h); finite past the overflow of cosh.
+  EXPECT_NEAR(piston_second_order_amplitude(height, 400.0, h), -height * height / (32 * h), 1e-18);
+}
+
+// Second-order generation adds one harmonic at twice the frequency and phase with stroke 2 A2;
+// the first harmonic is first order's. A flap or an irregular sea is refused. The velocity
+// table's sampling follows the fastest harmonic.
+TEST(SecondOrderGeneration, PaddleMotionGetsTheSecondHarmonic) {
+  RegularWave w;
+  w.depth = 0.5;
+  w.k = 1.6;
+  w.omega = intrinsic_frequency(w.k, w.depth, g);
+  w.height = 0.078;
+  w.phase = 0.3;
+  const PaddleMotion first = regular_paddle_motion(PaddleType::Piston, w, 2.0);
+  const PaddleMotion second =
+      regular_paddle_motion(PaddleType::Piston, w, 2.0, PaddleGeneration::SecondOrder);
+  ASSERT_EQ(second.harmonics.size(), 2u);
+  EXPECT_EQ(second.harmonics[0].stroke, first.harmonics[0].stroke);
+  EXPECT_EQ(second.harmonics[1].omega, 2 * w.omega);
+  EXPECT_EQ(second.harmonics[1].phase, 2 * w.phase);
+  EXPECT_DOUBLE_EQ(second.harmonics[1].stroke,
+                   2 * piston_second_order_amplitude(w.height, w.k * w.depth, w.depth));
+  // X(t) - X1(t) = ramp (A2) sin(2 omega t - 2 phase) after the ramp.
+  for (double t : {4.1, 7.77}) {
+    double x1, v1, x2, v2;
+    paddle_state(first, t, x1, v1);
+    paddle_state(second, t, x2, v2);
+    const double a2 = 0.5 * second.harmonics[1].stroke;
+    EXPECT_NEAR(x2 - x1, a2 * std::sin(2 * w.omega * t - 2 * w.phase), 1e-15);
+    EXPECT_NEAR(v2 - v1, 2 * w.omega * a2 * std::cos(2 * w.omega * t - 2 * w.phase), 1e-14);
+  }
+  EXPECT_THROW(regular_paddle_motion(PaddleType::Flap, w, 2.0, PaddleGeneration::SecondOrder),
+               Error);
+  const WaveTrain regular = regular_wave_train(w.height, 2 * M_PI / w.omega, w.depth, 2, 2.0, g);
+  const PaddleMotion m = train_paddle_motion(PaddleType::Piston, regular,
+                                             PaddleGeneration::SecondOrder);
+  ASSERT_EQ(m.harmonics.size(), 2u);
+  EXPECT_NEAR(paddle_sample_interval(m),
+              0.5 * paddle_sample_interval(train_paddle_motion(PaddleType::Piston, regular)),
+              1e-15);
+  const auto sea = jonswap_components(JonswapSpec{0.05, 1.4}, 0.3, 2.0, 10, 3);
+  EXPECT_THROW(train_paddle_motion(PaddleType::Piston, irregular_wave_train(sea, 0.5, 3.0, g),
+                                   PaddleGeneration::SecondOrder),
+               Error);
+}
+
 // A sampled sine about a raised mean: every wave's period is T (the crossings interpolated
 // linearly where the sine is nearly straight: error far below 1e-6 T at 200 samples a
 // period) and its height 2A less at most the sampling loss A (omega dt)^2 / 4; the mean level

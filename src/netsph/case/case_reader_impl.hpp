@@ -188,6 +188,11 @@ class CaseReader {
   /// The paddle spans the water's depth (and, in 3D, its width).
   void check_paddle_geometry(const TomlTableReader& r, const toml::node& maker) const;
   void read_wave_train(const TomlTableReader& r);
+  /// [waves] with relaxation_zone: the zone, the current from the inlet, the water's levels
+  /// (case_reader_relaxation.cpp).
+  void read_relaxation_wavemaker(const TomlTableReader& r);
+  /// waves.generation: first or second order, and where second order applies.
+  void read_generation(const TomlTableReader& r);
   /// Sets the paddle wall's motion and checks that the tank holds its travel.
   void set_paddle_motion(const TomlTableReader& r);
   /// No wall's lid over the water below the wave crests.

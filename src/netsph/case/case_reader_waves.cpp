@@ -70,6 +70,7 @@ void CaseReader::read_waves() {
                    "waves' origin");
     }
   }
+  if (r.has("relaxation_zone")) return read_relaxation_wavemaker(r);
   w.paddle = r.choice("paddle", kPaddleTypeNames, w.paddle);
   if (w.paddle == PaddleType::Flap) {
     r.fail_value("paddle", *r.find("paddle"),
@@ -79,9 +80,9 @@ void CaseReader::read_waves() {
   if (!spec_.inlets.empty() || !spec_.outlets.empty()) {
     const OpenBoundarySpec& ob = spec_.inlets.empty() ? spec_.outlets[0] : spec_.inlets[0];
     r.fail_table(fmt::format(
-        "a wave flume with open boundaries is not supported yet: '{}' ({}) is an {}; waves "
-        "generated at an inlet (waves on a current) are planned, a paddle needs a closed tank "
-        "with a damping zone before its far wall",
+        "a paddle needs a closed tank with a damping zone before its far wall, and '{}' ({}) "
+        "is an {}: for waves on a current from an inlet, make them with a relaxation zone "
+        "(waves.relaxation_zone = [x_full, x_end]) instead of a paddle",
         ob.name, ob.where.str(), spec_.inlets.empty() ? "outlet" : "inlet"));
   }
   const toml::node& maker = r.require("wavemaker", "the name of the [[wall]] that is the paddle");
@@ -248,7 +249,8 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
   const double g = -spec_.fluid.gravity.z;
   const std::string_view kind = name_of(w.kind);
-  const std::vector<std::string_view> regular_keys = {"height", "period", "theory"};
+  const std::vector<std::string_view> regular_keys = {"height", "period", "theory",
+                                                      "generation"};
   const std::vector<std::string_view> jonswap_keys = {"hs", "tp", "gamma", "seed", "components"};
   for (const auto& [owner, keys] :
        {std::pair{WaveKind::Regular, regular_keys}, std::pair{WaveKind::Jonswap, jonswap_keys}}) {
@@ -269,6 +271,7 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     w.period = period =
         r.required_number("period", NumberRule::positive("s"), "the wave period T, s");
     w.theory = r.choice("theory", kWaveTheoryNames, w.theory);
+    read_generation(r);
     if (period > spec_.simulation.end_time) {
       r.fail_value("period", *r.find("period"),
                    fmt::format("is longer than the run (simulation.end_time = {} s): not one "
@@ -360,11 +363,37 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
   }
 }
 
+// Second-order generation makes the Stokes second-order wave: its paddle adds the second
+// harmonic that leaves only the Stokes wave's bound one (waves/wavemaker_theory.hpp). It follows
+// the theory by default, so that the paddle makes the wave the gauges are compared with.
+void CaseReader::read_generation(const TomlTableReader& r) {
+  WaveSpec& w = spec_.waves;
+  const PaddleGeneration fallback = w.theory == WaveTheory::Stokes2 && !w.standalone
+                                        ? PaddleGeneration::SecondOrder
+                                        : PaddleGeneration::FirstOrder;
+  w.generation = r.choice("generation", kPaddleGenerationNames, fallback);
+  const toml::node* node = r.find("generation");
+  if (!node || w.generation != PaddleGeneration::SecondOrder) return;
+  if (w.standalone) {
+    r.fail_value("generation", *node,
+                 "applies to a flume's paddle; a standalone case's waves have no paddle (they "
+                 "are given by their theory): remove the key");
+  }
+  if (w.theory != WaveTheory::Stokes2) {
+    r.fail_value("generation", *node,
+                 "second-order generation makes the Stokes second-order wave, and theory = \"linear\" "
+                 "asks for a linear one: set theory = \"stokes2\" or generation = \"first_order\"");
+  }
+  if (w.paddle != PaddleType::Piston) {
+    r.fail_value("generation", *node, "second-order generation is built for a piston paddle only");
+  }
+}
+
 void CaseReader::set_paddle_motion(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
   WallSpec& wall = spec_.walls[w.wall];
-  const PaddleMotion motion = train_paddle_motion(w.paddle, w.train);
-  const double interval = paddle_sample_interval(w.train);
+  const PaddleMotion motion = train_paddle_motion(w.paddle, w.train, w.generation);
+  const double interval = paddle_sample_interval(motion);
   const double samples = spec_.simulation.end_time / interval;
   const double work = samples * static_cast<double>(motion.harmonics.size());
   if (samples > kMaxPaddleSamples || work > kMaxPaddleWork) {
@@ -392,8 +421,9 @@ void CaseReader::set_paddle_motion(const TomlTableReader& r) {
   const toml::node& maker = *r.find("wavemaker");
   const std::string what = fmt::format(
       "the paddle travels {:.4g} m either side of x = {} m over the run (its largest excursion "
-      "from first-order wavemaker theory, stroke {:.4g} m)",
-      e, format_number(w.paddle_x), 2 * e);
+      "from {} wavemaker theory, stroke {:.4g} m)",
+      e, format_number(w.paddle_x),
+      w.generation == PaddleGeneration::SecondOrder ? "second-order" : "first-order", 2 * e);
   const DomainSpec& d = spec_.domain;
   if (d.given && (back < d.min.x || back > d.max.x)) {
     r.fail_value(
@@ -594,7 +624,7 @@ void CaseReader::check_gauge_position(const TomlTableReader& r, const GaugeSpec&
   const double dp = spec_.simulation.dp;
   const double support = 2 * spec_.simulation.h_over_dp * dp;
   for (const WallSpec& w : spec_.walls) {
-    const bool paddle = spec_.waves.given && &w == &spec_.walls[spec_.waves.wall];
+    const bool paddle = spec_.waves.has_paddle() && &w == &spec_.walls[spec_.waves.wall];
     const double travel = paddle ? spec_.waves.max_excursion : 0.0;
     for (const int axis : {0, 1}) {
       if (axis == 1 && is_2d()) continue;

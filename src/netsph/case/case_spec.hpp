@@ -304,20 +304,33 @@ struct WaveSpec {
   double height = 0;      ///< regular: H, m
   double period = 0;      ///< regular: T, s
   WaveTheory theory = WaveTheory::Linear;
+  /// regular, flume: the paddle's motion, first order or with the second harmonic that
+  /// suppresses the free one (default: second order for a Stokes-2 wave, else first)
+  PaddleGeneration generation = PaddleGeneration::FirstOrder;
   JonswapSpec jonswap;       ///< jonswap: hs, tp, gamma
   std::uint64_t seed = 1;    ///< jonswap: the random phases' seed
   int components = 0;        ///< jonswap: how many frequencies
   double depth = 0;          ///< still-water depth h, m (default: still level - lowest fill)
   double still_level = 0;    ///< z of the still-water level, m (default: the highest fill top)
   double ramp = 0;           ///< s (default: two periods)
-  double paddle_x = 0;       ///< x of the paddle's face at rest (standalone: origin_x), m
+  /// x of the paddle's face at rest (standalone: origin_x; relaxation: relaxation_end), m
+  double paddle_x = 0;
   bool standalone = false;   ///< a standalone net case's waves: no paddle
-  double current = 0;        ///< standalone: the current along x the waves ride on, m/s
+  /// A relaxation wavemaker instead of a paddle: the fluid's velocity is relaxed towards the
+  /// wave's (plus the current's) over x from relaxation_full (fully) to relaxation_end (not at
+  /// all), where the waves leave it; relaxation_end is then paddle_x, the waves' origin.
+  bool relaxation = false;
+  double relaxation_full = 0, relaxation_end = 0;  ///< m
+  double relaxation_rate = 0;                      ///< 1/s, at relaxation_full
+  /// standalone, relaxation: the current along the waves' direction they ride on, m/s
+  double current = 0;
   int direction = 1;         ///< +1: the waves travel in +x; -1: in -x
   WaveTrain train;           ///< the components, set up (derived)
   double max_excursion = 0;  ///< the paddle's largest excursion from rest over the run, m
   SourceLocation where;
 
+  /// A paddle wall makes the waves (not a standalone case's theory, not a relaxation zone).
+  bool has_paddle() const { return given && !standalone && !relaxation; }
   /// The period that sets the time scales (ramp, gauge sampling): T or Tp, s.
   double reference_period() const { return kind == WaveKind::Regular ? period : jonswap.tp; }
   /// The height that sets the crests and the resolution: H or Hs, m.

@@ -6,6 +6,7 @@
 #include "netsph/core/error.hpp"
 #include "netsph/setup/scene_builders.hpp"
 #include "netsph/sph/time_step.hpp"
+#include "netsph/waves/wavemaker_theory.hpp"
 
 // The waves' part of a scene: the damping zones the step applies, and the checks on [waves]
 // that need the scene's fluid model (its first time step) or its resolution.
@@ -23,6 +24,15 @@ constexpr double kMinParticlesPerHeight = 6;
 }  // namespace
 
 void add_damping_zones(const CaseSpec& spec, Scene& scene) {
+  // A relaxation wavemaker is a damping zone whose target moves with the wave: s = 0 at the
+  // zone's end (x_end, where the waves leave), full at x_full.
+  const WaveSpec& w = spec.waves;
+  if (w.given && w.relaxation) {
+    DampingZone z{w.relaxation_end, w.relaxation_full, w.relaxation_rate,
+                  Vec3f(Vec3d{w.direction * w.current, 0, 0})};
+    z.wave = {w.train.components.front(), w.paddle_x, w.still_level, w.ramp, w.direction};
+    scene.damping.push_back(z);
+  }
   for (const DampingSpec& d : spec.damping)
     scene.damping.push_back({d.from, d.to, d.rate, Vec3f(d.velocity)});
 }
@@ -67,6 +77,19 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
         w.where.str(), w.ramp, spec.simulation.end_time));
   }
   const double wavelength = w.reference_wavelength();
+  if (w.generation == PaddleGeneration::SecondOrder) {
+    // Madsen's correction is a long-wave result: past kh of about 1.16 its second harmonic
+    // changes sign, where the full theory with evanescent modes (Schaffer 1996) departs from it.
+    const double kh = 2 * M_PI / wavelength * w.depth;
+    if (piston_second_order_amplitude(height, kh, w.depth) < 0) {
+      scene.warnings.push_back(fmt::format(
+          "[waves] ({}): generation = \"second_order\" at kh = {:.3g}: Madsen's (1971) "
+          "correction, a shallow-water theory, is outside its range past kh = 1.16 (it changes "
+          "sign there); the free second harmonic it is meant to cancel is small in this deeper "
+          "water: consider generation = \"first_order\"",
+          w.where.str(), kh));
+    }
+  }
   for (const DampingSpec& d : spec.damping) {
     const double length = std::fabs(d.to - d.from);
     if (length >= 0.5 * wavelength) continue;

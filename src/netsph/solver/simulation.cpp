@@ -473,7 +473,7 @@ void Simulation::step() {
   }
   std::int64_t bad =
       symplectic_corrector(p_, start_, in, m, shift_on_ ? &shift_sums_ : nullptr, &shift_params_);
-  if (!scene_.damping.empty()) apply_damping(p_, scene_.damping, dt);
+  if (!scene_.damping.empty()) apply_damping(p_, scene_.damping, time_ + dt, dt);
   place_body_particles(false);
   time_ += dt;
   ++steps_;

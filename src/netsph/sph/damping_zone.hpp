@@ -8,20 +8,53 @@
 // The rate grows as beta = rate s^2 across the zone (s = 0 at `from`, 1 at `to`, rate beyond):
 // a gradual start reflects little of the wave itself. One definition for the CPU and the device
 // step.
+//
+// The same zone with a moving target is a relaxation wavemaker (the relaxation-zone generation
+// of Jacobsen et al. 2012, Int. J. Numer. Meth. Fluids 70:1073-1088, brought to SPH by
+// Altomare et al. 2018, Appl. Ocean Res. 81:15-33): the target is the current plus a regular
+// wave's orbital velocity at the particle's place and time (waves/wave_kinematics.hpp), so the
+// fluid in the zone is driven into the wave, which leaves the zone's weak end as a free wave.
+// It needs no moving wall, so it makes waves on a current coming from an inlet.
 #include <cmath>
 
 #include "netsph/core/host_device.hpp"
 #include "netsph/core/real.hpp"
 #include "netsph/core/vec3.hpp"
+#include "netsph/waves/wave_kinematics.hpp"
 
 namespace netsph {
+
+/// The wave a relaxation wavemaker's zone drives the fluid into, in the wave's own frame:
+/// x' = direction (x - origin_x) along its travel, z' = z - still_level.
+struct ZoneWave {
+  RegularWave wave{};     ///< height 0: no wave (a plain damping zone)
+  double origin_x = 0;    ///< m: where the wave's phase is wave.phase at t = 0
+  double still_level = 0; ///< m: z of the still-water surface
+  double ramp = 0;        ///< s: the wave's ramp from rest (wave_ramp)
+  int direction = 1;      ///< +1: the wave travels in +x; -1: in -x
+};
 
 struct DampingZone {
   double from = 0;   ///< x where the damping starts, m
   double to = 0;     ///< x where it reaches `rate`, m (to < from: the zone faces -x)
   double rate = 0;   ///< 1/s
-  Vec3f velocity{};  ///< the velocity relaxed towards, m/s
+  Vec3f velocity{};  ///< the velocity relaxed towards (zero, or the current), m/s
+  ZoneWave wave{};   ///< a relaxation wavemaker's wave, added to `velocity` (none by default)
 };
+
+/// The velocity relaxed towards at p, time t: `velocity`, plus the zone's wave's orbital
+/// velocity (ramped) when it has one.
+NETSPH_HD Vec3f damping_target(const DampingZone& z, const Vec3d& p, double t) {
+  if (!(z.wave.wave.height > 0)) return z.velocity;
+  const ZoneWave& zw = z.wave;
+  const double along = zw.direction * (p.x - zw.origin_x);
+  double u = 0, w = 0;
+  wave_velocity(zw.wave, along, p.z - zw.still_level, t, u, w);
+  const double r = wave_ramp(t, zw.ramp);
+  // wave_velocity includes the current the wave rides; `velocity` already holds it.
+  const double orbital = (u - zw.wave.current) * r;
+  return z.velocity + Vec3f(Vec3d{zw.direction * orbital, 0, w * r});
+}
 
 /// The relaxation rate at x, 1/s.
 NETSPH_HD double damping_rate(const DampingZone& z, double x) {
@@ -30,12 +63,13 @@ NETSPH_HD double damping_rate(const DampingZone& z, double x) {
   return s >= 1 ? z.rate : z.rate * s * s;
 }
 
-/// Relaxes v (a fluid particle's at x) over a step of dt, in place.
-NETSPH_HD void damp_velocity(const DampingZone& z, double x, double dt, Vec3f& v) {
-  const double beta = damping_rate(z, x);
+/// Relaxes v (a fluid particle's at p) over a step of dt ending at time t, in place.
+NETSPH_HD void damp_velocity(const DampingZone& z, const Vec3d& p, double t, double dt, Vec3f& v) {
+  const double beta = damping_rate(z, p.x);
   if (!(beta > 0)) return;
   const auto keep = static_cast<Real>(std::exp(-beta * dt));
-  v = z.velocity + (v - z.velocity) * keep;
+  const Vec3f target = damping_target(z, p, t);
+  v = target + (v - target) * keep;
 }
 
 }  // namespace netsph

@@ -28,9 +28,20 @@ constexpr std::string_view name_of(PaddleType v) {
   return name_of(kPaddleTypeNames, v);
 }
 
+/// How the paddle's motion is made: first-order wavemaker theory only, or with the second-order
+/// correction that suppresses the free second harmonic (piston_second_order_amplitude).
+enum class PaddleGeneration : std::uint8_t { FirstOrder, SecondOrder };
+inline constexpr std::array kPaddleGenerationNames = {
+    EnumName<PaddleGeneration>{"first_order", PaddleGeneration::FirstOrder},
+    EnumName<PaddleGeneration>{"second_order", PaddleGeneration::SecondOrder}};
+static_assert(one_to_one(kPaddleGenerationNames));
+constexpr std::string_view name_of(PaddleGeneration v) {
+  return name_of(kPaddleGenerationNames, v);
+}
+
 /// One harmonic of a paddle's motion: X = ramp(t) (stroke / 2) sin(omega t - phase).
 struct PaddleHarmonic {
-  double stroke = 0;  ///< S, m (full excursion)
+  double stroke = 0;  ///< S, m (full excursion; a second-order correction's may be negative)
   double omega = 0;   ///< rad/s
   double phase = 0;   ///< rad: the phase of the wave it makes at the paddle
 };
@@ -46,12 +57,12 @@ inline double paddle_height_to_stroke(PaddleType type, double kh) {
   return type == PaddleType::Piston ? piston_height_to_stroke(kh) : flap_height_to_stroke(kh);
 }
 
-/// The paddle motion that makes regular wave `w` (first order; w.k the wave number in still
-/// water at the paddle).
-inline PaddleMotion regular_paddle_motion(PaddleType type, const RegularWave& w, double ramp) {
-  const double kh = w.k * w.depth;
-  return {{{w.height / paddle_height_to_stroke(type, kh), w.omega, w.phase}}, ramp};
-}
+/// The paddle motion that makes regular wave `w` (w.k the wave number in still water at the
+/// paddle): its first-order harmonic and, for second-order generation (a piston only: netsph::
+/// Error for a flap), the second harmonic A2 sin(2 (omega t - phase)) that cancels the free
+/// second harmonic (wavemaker_theory.hpp). The ramp multiplies both.
+PaddleMotion regular_paddle_motion(PaddleType type, const RegularWave& w, double ramp,
+                                   PaddleGeneration generation = PaddleGeneration::FirstOrder);
 
 /// The paddle's displacement X(t), m, and velocity dX/dt, m/s (the ramp's own rate included,
 /// so that the velocity is the displacement's derivative).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "netsph/core/error.hpp"
 #include "netsph/waves/dispersion.hpp"
 
 namespace netsph {
@@ -64,7 +65,13 @@ WaveTrain irregular_wave_train(const std::vector<WaveComponent>& components, dou
   return train;
 }
 
-PaddleMotion train_paddle_motion(PaddleType type, const WaveTrain& train) {
+PaddleMotion train_paddle_motion(PaddleType type, const WaveTrain& train,
+                                 PaddleGeneration generation) {
+  if (generation == PaddleGeneration::SecondOrder) {
+    if (train.components.size() != 1)
+      throw Error("", "second-order generation is built for regular waves only");
+    return regular_paddle_motion(type, train.components.front(), train.ramp, generation);
+  }
   PaddleMotion m;
   m.ramp = train.ramp;
   m.harmonics.reserve(train.components.size());
@@ -137,9 +144,9 @@ SampledPaddle sample_paddle(const PaddleMotion& m, double end_time, double inter
   return s;
 }
 
-double paddle_sample_interval(const WaveTrain& train) {
+double paddle_sample_interval(const PaddleMotion& m) {
   double fastest = 0;
-  for (const RegularWave& w : train.components) fastest = std::max(fastest, w.omega);
+  for (const PaddleHarmonic& h : m.harmonics) fastest = std::max(fastest, h.omega);
   return fastest > 0 ? 2 * M_PI / fastest / 100 : 0.0;
 }
 

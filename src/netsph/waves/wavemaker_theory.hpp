@@ -29,3 +29,28 @@ inline double flap_height_to_stroke(double kh) {
 }
 
 }  // namespace netsph
+
+namespace netsph {
+
+/// Second-order generation with a piston (Madsen 1971, "On the generation of long waves",
+/// J. Geophys. Res. 76(36):8672-8683; the form used by Altomare et al. 2017, Coastal Eng.
+/// 127:37-54, eq. 9): a piston moving as first-order theory says makes, besides the Stokes
+/// wave's bound second harmonic, a free second harmonic that travels at its own, slower speed,
+/// so the wave's shape changes down the flume. Adding a second harmonic to the paddle's motion,
+///   X2(t) = A2 sin(2 (omega t - phase)),
+///   A2 = H^2 / (32 h) (3 cosh kh / sinh^3 kh - 2 / m1),   m1 = H / S (piston_height_to_stroke),
+/// cancels it. The result comes from balancing, at the paddle, the second-order volume flux of
+/// the bound wave against the paddle's and the first-order wave's, with the progressive mode
+/// only (no evanescent modes): a long-wave result, exact as kh -> 0 (there A2 -> 3 H^2 /
+/// (32 k^3 h^4), the stroke that makes the bound harmonic by itself). Past kh of about 1.16 it
+/// changes sign, and the full theory with the evanescent modes (Schaffer 1996, Ocean Eng.
+/// 23(1):47-88, not built) differs from it: use it in shallow and intermediate water, where
+/// the free harmonic matters (it is measured at kh = 0.8, docs/VALIDATION.md "Waves").
+/// Returns A2, m, signed. height H and depth h in m.
+inline double piston_second_order_amplitude(double height, double kh, double depth) {
+  // Past kh = 20, cosh / sinh^3 is below 4 e^-40: nothing beside 2 / m1 = 1.
+  const double bound = kh > 20 ? 0.0 : 3 * std::cosh(kh) / std::pow(std::sinh(kh), 3);
+  return height * height / (32 * depth) * (bound - 2 / piston_height_to_stroke(kh));
+}
+
+}  // namespace netsph

@@ -50,12 +50,12 @@ std::int64_t symplectic_corrector(ParticleSet& p, const StepStart& s, const Stag
   return bad == n ? -1 : bad;
 }
 
-void apply_damping(ParticleSet& p, std::span<const DampingZone> zones, double dt) {
+void apply_damping(ParticleSet& p, std::span<const DampingZone> zones, double t, double dt) {
   const auto n = static_cast<std::int64_t>(p.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid) continue;
-    for (const DampingZone& z : zones) damp_velocity(z, p.pos[i].x, dt, p.vel[i]);
+    for (const DampingZone& z : zones) damp_velocity(z, p.pos[i], t, dt, p.vel[i]);
   }
 }
 

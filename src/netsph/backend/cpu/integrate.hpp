@@ -46,8 +46,9 @@ std::int64_t symplectic_corrector(ParticleSet& p, const StepStart& s, const Stag
                                   const FluidModel& m, const ShiftingSums* shifting = nullptr,
                                   const ShiftingParams* shift_params = nullptr);
 
-/// The damping zones' relaxation of the fluid particles' velocities over a step of dt
-/// (sph/damping_zone.hpp), after the corrector.
-void apply_damping(ParticleSet& p, std::span<const DampingZone> zones, double dt);
+/// The damping zones' relaxation of the fluid particles' velocities over a step of dt ending
+/// at time t (sph/damping_zone.hpp: a relaxation wavemaker's target moves), after the
+/// corrector.
+void apply_damping(ParticleSet& p, std::span<const DampingZone> zones, double t, double dt);
 
 }  // namespace netsph
