@@ -31,9 +31,11 @@ fit's condition number says so).
 Usage:
   /usr/bin/python3 tools/harmonic_analysis.py gauges.csv --period 1.946 --depth 0.5 \\
       [--current 0.2] [--gauges g1,g2,...] [--x 3.93,4.61,...] [--from 16] [--to 23.78] \\
-      [--json out.json]
+      [--json out.json] [--plot out.png]
 
---gauges defaults to every column without "_target"; --x to the positions in the run's
+--plot draws the first and second harmonics' amplitudes at the gauges with the fitted incident
+plus reflected, and bound plus free, waves between them (matplotlib). --gauges defaults to
+every column without "_target"; --x to the positions in the run's
 summary.json beside the CSV (its "gauges" entries) when it has them. Positions are measured
 from the paddle's rest position (the phase origin does not change the amplitudes).
 """
@@ -52,11 +54,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from reflection_analysis import G, read_records, wave_number  # noqa: E402
 
 
-def wave_number_on_current(omega: float, depth: float, current: float, g: float = G) -> float:
+def wave_number_on_current(omega: float, depth: float, current: float, g: float = G,
+                           blocked_ok: bool = False) -> float | None:
     """The root k of (omega - k U)^2 = g k tanh(k h) with omega - k U > 0 (the waves travel
     with U > 0 along them, against them for U < 0; netsph's waves/dispersion.cpp solves the
     same relation). Bisection: the left side minus the right falls through zero once on that
-    branch below the blocking point."""
+    branch below the blocking point. A blocked wave: None with blocked_ok, else an exit."""
     if current == 0:
         return wave_number(omega, depth, g)
     lo, hi = 0.0, 1.0
@@ -64,7 +67,9 @@ def wave_number_on_current(omega: float, depth: float, current: float, g: float 
     while f(hi) > 0 and omega - hi * current > 0:
         hi *= 2
         if hi > 1e6:
-            sys.exit("no wave number on this current (blocked)")
+            if blocked_ok:
+                return None
+            sys.exit(f"the waves are blocked by a current of {current} m/s: no wave number")
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if f(mid) > 0 and omega - mid * current > 0:
@@ -72,6 +77,8 @@ def wave_number_on_current(omega: float, depth: float, current: float, g: float 
         else:
             hi = mid
     if f(lo) > 1e-9 * omega * omega or omega - lo * current <= 0:
+        if blocked_ok:
+            return None
         sys.exit(f"the waves are blocked by a current of {current} m/s: no wave number")
     return 0.5 * (lo + hi)
 
@@ -125,7 +132,14 @@ def analyse(t: np.ndarray, records: list[np.ndarray], x: list[float], period: fl
     records = [np.interp(uniform, t, r) for r in records]
     omega = 2 * math.pi / period
     k = wave_number_on_current(omega, depth, current)
-    k2 = wave_number_on_current(2 * omega, depth, current)
+    # The free second harmonic is blocked by a weaker opposing current than the first: then
+    # there is none to separate (None), and the first harmonic is still measured.
+    k2 = wave_number_on_current(2 * omega, depth, current, blocked_ok=True)
+    xs_sorted = np.sort(np.asarray(x, dtype=float))
+    widest = float(np.max(np.diff(xs_sorted)))
+    if widest >= 0.5 * (2 * math.pi / k):
+        sys.exit(f"gauges {widest:.4g} m apart, at least half a wavelength ({math.pi / k:.4g} m): "
+                 "the wave's phase along them is ambiguous; give gauges closer together")
     fits = [harmonic_amplitudes(uniform, r, omega) for r in records]
     xs = np.array(x, dtype=float)
     c1 = np.array([f[0][0] for f in fits])
@@ -135,9 +149,14 @@ def analyse(t: np.ndarray, records: list[np.ndarray], x: list[float], period: fl
     k_measured = phase_wave_number(c1, xs)
     sign = 1.0 if k_measured >= 0 else -1.0
     inc, refl, cond1 = two_wave_fit(c1, xs, sign * k, -sign * k)
-    bound, free, cond2 = two_wave_fit(c2, xs, sign * 2 * k, sign * k2)
+    if k2 is not None:
+        bound, free, cond2 = two_wave_fit(c2, xs, sign * 2 * k, sign * k2)
+    else:
+        # Only the bound harmonic travels: its amplitude is the mean of the gauges' own.
+        bound, free, cond2 = complex(np.mean(np.abs(c2))), 0j, 1.0
     a1 = abs(inc)
-    return {
+    separated = {"_inc": inc, "_refl": refl, "_bound": bound, "_free": free}  # for plot()
+    return separated | {
         "period_s": period,
         "current_m_per_s": current,
         "k_per_m": k,
@@ -145,13 +164,14 @@ def analyse(t: np.ndarray, records: list[np.ndarray], x: list[float], period: fl
         "measured_wavelength_m": 2 * math.pi / abs(k_measured) if k_measured else math.inf,
         "wavelength_ratio": abs(k) / abs(k_measured) if k_measured else math.inf,
         "k2_free_per_m": k2,
-        "beat_length_m": 2 * math.pi / (k2 - 2 * k),
+        "beat_length_m": 2 * math.pi / (k2 - 2 * k) if k2 is not None else None,
         "gauge_span_m": float(xs.max() - xs.min()),
         "incident_height_m": 2 * a1,
         "reflection_coefficient": abs(refl) / a1 if a1 > 0 else math.nan,
         "bound_second_harmonic_m": abs(bound),
-        "free_second_harmonic_m": abs(free),
-        "free_over_bound": abs(free) / abs(bound) if abs(bound) > 0 else math.inf,
+        "free_second_harmonic_m": abs(free) if k2 is not None else None,
+        "free_over_bound": (abs(free) / abs(bound) if abs(bound) > 0 else math.inf)
+        if k2 is not None else None,
         "stokes_bound_for_measured_height_m": stokes_bound_amplitude(a1, k, depth),
         "condition_first": cond1,
         "condition_second": cond2,
@@ -159,6 +179,39 @@ def analyse(t: np.ndarray, records: list[np.ndarray], x: list[float], period: fl
                     "second_harmonic_m": abs(f[0][1]), "third_harmonic_m": abs(f[0][2]),
                     "fit_residual": f[1]} for xp, f in zip(xs, fits)],
     }
+
+
+def plot(r: dict, path: str, title: str) -> None:
+    """The harmonics' amplitudes at the gauges and the two-wave fits along the flume."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    xs = np.array([g["x_m"] for g in r["gauges"]])
+    x = np.linspace(xs.min(), xs.max(), 400)
+    sign = 1.0 if r["measured_wavelength_m"] > 0 else -1.0
+    fit1 = np.abs(r["_inc"] * np.exp(1j * sign * r["k_per_m"] * x) +
+                  r["_refl"] * np.exp(-1j * sign * r["k_per_m"] * x))
+    k2 = r["k2_free_per_m"] if r["k2_free_per_m"] is not None else 0.0
+    fit2 = np.abs(r["_bound"] * np.exp(1j * sign * 2 * r["k_per_m"] * x) +
+                  r["_free"] * np.exp(1j * sign * k2 * x))
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    a1.plot(xs, [g["first_harmonic_m"] * 1e3 for g in r["gauges"]], "o", label="gauges")
+    a1.plot(x, fit1 * 1e3, "-", label=f"incident + reflected (Kr = {r['reflection_coefficient']:.3f})")
+    a1.set_ylabel("first harmonic, mm")
+    a1.legend()
+    a2.plot(xs, [g["second_harmonic_m"] * 1e3 for g in r["gauges"]], "o", label="gauges")
+    free = r["free_second_harmonic_m"]
+    a2.plot(x, fit2 * 1e3, "-", label=f"bound {r['bound_second_harmonic_m'] * 1e3:.2f} mm + free "
+            + (f"{free * 1e3:.2f} mm" if free is not None else "(blocked)"))
+    a2.axhline(r["stokes_bound_for_measured_height_m"] * 1e3, ls="--", c="gray",
+               label="Stokes bound harmonic")
+    a2.set_ylabel("second harmonic, mm")
+    a2.set_xlabel("x, m")
+    a2.set_ylim(bottom=0)
+    a2.legend()
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
 
 
 def positions_from_summary(csv_path: str, names: list[str]) -> list[float] | None:
@@ -194,22 +247,34 @@ def main() -> None:
     p.add_argument("--from", dest="t0", type=float, default=None, help="start time, s")
     p.add_argument("--to", dest="t1", type=float, default=None, help="end time, s")
     p.add_argument("--json", default=None, help="also write the results to this file")
+    p.add_argument("--plot", default=None, help="also draw the harmonics along the flume (PNG)")
     a = p.parse_args()
-    if not (a.period > 0 and a.depth > 0):
-        sys.exit("--period and --depth must be positive")
+    for name, v in (("--period", a.period), ("--depth", a.depth)):
+        if not (math.isfinite(v) and 1e-6 < v < 1e6):
+            sys.exit(f"{name} must be a positive number in (1e-6, 1e6), not {v}")
+    if not (math.isfinite(a.current) and abs(a.current) < 1e3):
+        sys.exit(f"--current must be a finite speed below 1000 m/s, not {a.current}")
     if a.gauges:
         names = a.gauges.split(",")
     else:
-        with open(a.csv) as f:
-            header = [h.split(" [")[0].strip() for h in f.readline().strip().split(",")]
+        try:
+            with open(a.csv) as f:
+                header = [h.split(" [")[0].strip() for h in f.readline().strip().split(",")]
+        except OSError as e:
+            sys.exit(f"{a.csv}: cannot read it: {e.strerror}")
         names = [h for h in header[1:] if not h.endswith("_target")]
-    xs = [float(v) for v in a.x.split(",")] if a.x else positions_from_summary(a.csv, names)
+    try:
+        xs = [float(v) for v in a.x.split(",")] if a.x else positions_from_summary(a.csv, names)
+    except ValueError:
+        sys.exit(f"--x must be numbers separated by commas, not '{a.x}'")
+    if xs is not None and not all(math.isfinite(v) for v in xs):
+        sys.exit("--x: every position must be a finite number")
     if xs is None:
         sys.exit("give --x: the gauges' positions (summary.json beside the CSV does not list "
                  "them)")
     if len(xs) != len(names):
         sys.exit(f"--x has {len(xs)} positions for {len(names)} gauges")
-    if len(set(xs)) < 3:
+    if len(set(xs)) < 3 or len(set(xs)) != len(xs):
         sys.exit("need at least three gauges at different positions")
     t, recs = read_records(a.csv, names)
     keep = (t >= (a.t0 if a.t0 is not None else -math.inf)) & (
@@ -218,6 +283,8 @@ def main() -> None:
     if len(t) < 16 or t[-1] - t[0] < a.period:
         sys.exit("the window holds less than one period (or fewer than 16 samples)")
     for name, r in zip(names, recs):
+        if np.any(np.isinf(r)):
+            sys.exit(f"gauge {name} has an infinite value in the window")
         if not np.all(np.isfinite(r)):
             sys.exit(f"gauge {name} found no water somewhere in the window (nan)")
     r = analyse(t, recs, xs, a.period, a.depth, a.current)
@@ -226,14 +293,20 @@ def main() -> None:
     print(f"wavelength: measured {r['measured_wavelength_m']:.4g} m, dispersion relation "
           f"{r['wavelength_m']:.4g} m{' on the current' if a.current else ''} (measured / theory "
           f"= {r['wavelength_ratio']:.4f})")
-    print(f"second harmonic: bound {r['bound_second_harmonic_m'] * 1e3:.4g} mm (Stokes, for the "
-          f"measured height: {r['stokes_bound_for_measured_height_m'] * 1e3:.4g} mm), free "
-          f"{r['free_second_harmonic_m'] * 1e3:.4g} mm, free / bound = {r['free_over_bound']:.3f} "
-          f"(condition {r['condition_second']:.3g}; beat length {r['beat_length_m']:.3g} m, "
-          f"gauges span {r['gauge_span_m']:.3g} m)")
+    if r["k2_free_per_m"] is None:
+        print(f"second harmonic: {r['bound_second_harmonic_m'] * 1e3:.4g} mm, all bound (a free "
+              f"wave at twice the frequency is blocked by this current)")
+    else:
+        print(f"second harmonic: bound {r['bound_second_harmonic_m'] * 1e3:.4g} mm (Stokes, for "
+              f"the measured height: {r['stokes_bound_for_measured_height_m'] * 1e3:.4g} mm), free "
+              f"{r['free_second_harmonic_m'] * 1e3:.4g} mm, free / bound = "
+              f"{r['free_over_bound']:.3f} (condition {r['condition_second']:.3g}; beat length "
+              f"{r['beat_length_m']:.3g} m, gauges span {r['gauge_span_m']:.3g} m)")
+    if a.plot:
+        plot(r, a.plot, os.path.basename(os.path.dirname(os.path.abspath(a.csv))))
     if a.json:
         with open(a.json, "w") as f:
-            json.dump(r, f, indent=2)
+            json.dump({k: v for k, v in r.items() if not k.startswith("_")}, f, indent=2)
 
 
 if __name__ == "__main__":

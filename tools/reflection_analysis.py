@@ -60,8 +60,11 @@ def wave_number(omega: float, depth: float, g: float = G) -> float:
 
 def read_records(path: str, names: list[str]) -> tuple[np.ndarray, list[np.ndarray]]:
     """Time and the named columns of a CSV (headers `name` or `name [unit]`)."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as e:
+        sys.exit(f"{path}: cannot read it: {e.strerror}")
     if len(rows) < 3:
         sys.exit(f"{path}: fewer than two rows of data")
     header = [h.split(" [")[0].strip() for h in rows[0]]
@@ -70,7 +73,17 @@ def read_records(path: str, names: list[str]) -> tuple[np.ndarray, list[np.ndarr
         if n not in header:
             sys.exit(f"{path}: no column '{n}' (columns: {', '.join(header[1:])})")
         cols.append(header.index(n))
-    data = np.array([[float(v) for v in r] for r in rows[1:] if r], dtype=float)
+    values = []
+    for line, r in enumerate(rows[1:], start=2):
+        if not r:
+            continue
+        if len(r) != len(header):
+            sys.exit(f"{path}:{line}: {len(r)} values, the header has {len(header)} columns")
+        try:
+            values.append([float(v) for v in r])
+        except ValueError:
+            sys.exit(f"{path}:{line}: a value that is not a number")
+    data = np.array(values, dtype=float)
     return data[:, 0], [data[:, c] for c in cols]
 
 

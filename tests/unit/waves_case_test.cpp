@@ -202,6 +202,27 @@ TEST(WavesCase, RelaxationZoneMakesWavesOnTheInletsCurrent) {
   EXPECT_EQ(at_rest.z, 0.0f);
 }
 
+// Against the current the waves' earth-frame group velocity vanishes as the current nears the
+// blocking speed (0.4755 m/s here); the relaxation zone's default rate follows the group
+// velocity relative to the water, so it still drives the wave (it fell to 2% of its value at
+// 0.2 m/s when it followed the earth-frame one). Past blocking the message names the inlet.
+TEST(WavesCase, RelaxationRateHoldsNearTheBlockingSpeed) {
+  const std::string file = std::string(NETSPH_CASES_DIR) + "/waves/current_opposing2d.toml";
+  const double usual = read_case_file(file).waves.relaxation_rate;
+  const double near_blocking =
+      read_case_file(file, {"inlet.0.velocity=0.47"}).waves.relaxation_rate;
+  EXPECT_GT(near_blocking, 0.4 * usual);
+  try {
+    read_case_file(file, {"inlet.0.velocity=0.5"});
+    FAIL() << "waves past the blocking speed were accepted";
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("cannot exist on this current"), std::string::npos) << m;
+    EXPECT_NE(m.find("inlet 'inlet1'"), std::string::npos) << m;
+    EXPECT_EQ(m.find("[current]"), std::string::npos) << m;
+  }
+}
+
 TEST(WaveGauge, SurfaceIsWhereTheCoverageCrossesOneHalf) {
   std::vector<double> z, c;
   for (int k = 0; k <= 40; ++k) {

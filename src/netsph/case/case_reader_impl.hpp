@@ -154,6 +154,8 @@ class CaseReader {
   void read_body_reference(const TomlTableReader& r, BodySpec& body) const;
   /// `key` (a position) must lie inside [domain] when the case gives one.
   void check_in_domain(const TomlTableReader& r, std::string_view key, const Vec3d& point) const;
+  /// `key` (an x position: a zone across the whole tank) must lie within [domain]'s x range.
+  void check_x_in_domain(const TomlTableReader& r, std::string_view key, double x) const;
   void register_body_name(const toml::table& table, const BodySpec& body, int number);
 
   // case_reader_nets.cpp
@@ -182,6 +184,9 @@ class CaseReader {
   void read_waves();
   /// [waves] in a standalone net case: no paddle, the water's depth and level given.
   void read_standalone_waves(const TomlTableReader& r);
+  /// Where the waves' current comes from, for messages: "[current] velocity x = U m/s" or the
+  /// inlet's velocity.
+  std::string wave_current_source() const;
   void read_wave_paddle_wall(const TomlTableReader& r, const toml::node& maker);
   /// The still-water level and depth from the fill in front of the paddle.
   void read_wave_levels(const TomlTableReader& r, const toml::node& maker);

@@ -14,6 +14,7 @@
 
 #include "netsph/case/case_reader_impl.hpp"
 #include "netsph/core/error.hpp"
+#include "netsph/waves/dispersion.hpp"
 
 namespace netsph::case_detail {
 
@@ -42,7 +43,17 @@ void CaseReader::read_relaxation_wavemaker(const TomlTableReader& r) {
                  "wave fully at x_full, and the waves leave the zone at x_end, travelling from "
                  "x_full towards x_end");
   }
-  for (const double x : xs) check_in_domain(r, "relaxation_zone", {x, 0, 0});
+  for (const double x : xs) check_x_in_domain(r, "relaxation_zone", x);
+  // The zone drives the fluid over its length, and it must be longer than the kernel's reach to
+  // drive anything (set-up warns below half a wavelength, as for a damping zone).
+  const double support = 2 * spec_.simulation.h_over_dp * spec_.simulation.dp;
+  if (std::fabs(xs[1] - xs[0]) < support) {
+    r.fail_value("relaxation_zone", node,
+                 fmt::format("is {:.4g} m long, shorter than the kernel's reach 2h = {:.3g} m: it "
+                             "cannot drive the fluid into a wave; make it one to two "
+                             "wavelengths long",
+                             std::fabs(xs[1] - xs[0]), support));
+  }
   w.relaxation_full = xs[0];
   w.relaxation_end = xs[1];
   w.direction = xs[1] > xs[0] ? 1 : -1;
@@ -60,6 +71,23 @@ void CaseReader::read_relaxation_wavemaker(const TomlTableReader& r) {
                              "drives water that must be there from the start",
                              format_number(lo), format_number(hi)));
   }
+  // The zone's rate is full at x_full and on behind it, to the water's end (sph/damping_zone.hpp):
+  // x_full belongs at the end of the water (an inlet's or outlet's buffer, or the tank's end
+  // wall), or the water behind it is forced into the wave too.
+  const double water_end = w.direction > 0 ? water->box.min.x : water->box.max.x;
+  const double behind = std::fabs(xs[0] - water_end);
+  if (behind > hi - lo) {
+    r.fail_value(
+        "relaxation_zone", node,
+        fmt::format("puts x_full = {} m, {} m from the end of the water at x = {} m (fill at {}), "
+                    "farther than the zone is long ({} m): the zone drives the fluid fully from "
+                    "x_full back to the water's end, so that water would be forced into the "
+                    "wave too. Put x_full at the end of the water the waves come from (an "
+                    "inlet's buffer, an end wall) and x_end towards where they go{}",
+                    format_number(xs[0]), format_number(behind), format_number(water_end),
+                    water->where.str(), format_number(hi - lo),
+                    xs[1] < xs[0] ? " (here they would travel in -x)" : ""));
+  }
   w.still_level = water->surface_z.value_or(water->box.max.z);
   w.depth = w.still_level - water->box.min.z;
   if (!(w.depth > 0)) {
@@ -74,6 +102,16 @@ void CaseReader::read_relaxation_wavemaker(const TomlTableReader& r) {
     r.fail_table(fmt::format("a relaxation zone takes its current from one [[inlet]], and this "
                              "case has {}: keep one, on an x face",
                              spec_.inlets.size()));
+  }
+  if (spec_.inlets.empty()) {
+    for (const OpenBoundarySpec& out : spec_.outlets) {
+      if (!out.velocity) continue;
+      r.fail_table(fmt::format(
+          "outlet '{}' ({}) draws water out at {} m/s and no inlet brings it in: the tank "
+          "drains while the waves are set up on still water; add an [[inlet]] for a current, "
+          "or let the outlet's velocity follow the fluid (remove its velocity)",
+          out.name, out.where.str(), format_number(*out.velocity)));
+    }
   }
   double u = 0;
   if (!spec_.inlets.empty()) {
@@ -93,10 +131,15 @@ void CaseReader::read_relaxation_wavemaker(const TomlTableReader& r) {
   w.current = w.direction * u;
   read_wave_train(r);
 
+  // The default rate as a damping zone's, from the group velocity relative to the water: the
+  // earth-frame one vanishes as an opposing current nears the blocking speed, and the zone
+  // must still drive the wave within a fraction of its period there.
   const double length = hi - lo;
   const double g = -spec_.fluid.gravity.z;
+  const RegularWave& c = w.train.components.front();
+  const double relative = relative_group_velocity(c.k, w.depth, g);
   w.relaxation_rate = r.number("relaxation_rate", NumberRule::positive("1/s"),
-                               default_damping_rate(w, length, g));
+                               3 * relative * std::log(100.0) / length);
   check_free_surface(r);
 }
 

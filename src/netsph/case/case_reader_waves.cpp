@@ -60,6 +60,13 @@ void CaseReader::read_waves() {
                     format_vec3(g)));
   }
   w.kind = r.choice("type", kWaveKindNames, w.kind);
+  if (!r.has("relaxation_zone")) {
+    if (const toml::node* node = r.find("relaxation_rate")) {
+      r.fail_value("relaxation_rate", *node,
+                   "applies to a relaxation wavemaker (relaxation_zone), and this [waves] has "
+                   "none: remove the key");
+    }
+  }
   if (spec_.net_only()) return read_standalone_waves(r);
   if (spec_.fills.empty()) r.fail_table("waves need water: this case has no [[fill]]");
   for (const std::string_view key : {"depth", "still_water_level", "origin_x"}) {
@@ -95,13 +102,26 @@ void CaseReader::read_waves() {
   check_free_surface(r);
 }
 
+std::string CaseReader::wave_current_source() const {
+  const WaveSpec& w = spec_.waves;
+  const std::string along = fmt::format("{} m/s along the waves", format_number(w.current));
+  if (w.relaxation && !spec_.inlets.empty()) {
+    const OpenBoundarySpec& in = spec_.inlets.front();
+    return fmt::format("inlet '{}' ({}) velocity = {} m/s on its {} face: {}", in.name,
+                       in.where.str(), format_number(in.velocity.value_or(0.0)),
+                       name_of(in.face), along);
+  }
+  return fmt::format("[current] velocity x = {} m/s: {}", format_number(w.direction * w.current),
+                     along);
+}
+
 void CaseReader::read_standalone_waves(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
   w.standalone = true;
-  for (const std::string_view key : {"wavemaker", "paddle"}) {
+  for (const std::string_view key : {"wavemaker", "paddle", "relaxation_zone"}) {
     if (const toml::node* node = r.find(key)) {
       r.fail_value(key, *node,
-                   "a standalone net case (nets, no [[fill]]) has no paddle: its waves are "
+                   "a standalone net case (nets, no [[fill]]) has no wavemaker: its waves are "
                    "given by their theory, travelling in +x from origin_x; remove the key");
     }
   }
@@ -308,10 +328,8 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     k = w.current == 0 ? wave_number(2 * M_PI / period, w.depth, g)
                        : wave_number_on_current(2 * M_PI / period, w.depth, w.current, g);
   } catch (const Error& e) {
-    r.fail_table(
-        fmt::format("the waves cannot exist on this current ([current] velocity x = "
-                    "{} m/s): {}",
-                    format_number(w.current), e.what()));
+    r.fail_table(fmt::format("the waves cannot exist on this current ({}): {}",
+                             wave_current_source(), e.message()));
   }
   const double wavelength = 2 * M_PI / k, limit = breaking_steepness(k * w.depth);
   if (height / wavelength > limit) {
@@ -323,7 +341,7 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
                     "not break is {:.4g} m",
                     height / wavelength, wavelength, format_number(period), format_number(w.depth),
                     w.current == 0 ? std::string()
-                                   : fmt::format(", on a {} m/s current", format_number(w.current)),
+                                   : fmt::format(", on {}", wave_current_source()),
                     limit, limit * wavelength));
   }
   // Stokes' expansion holds while its second-order surface stays small beside the first
@@ -355,11 +373,9 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
           w.depth, w.ramp, g, w.current);
     }
   } catch (const Error& e) {
-    // An opposing current past the blocking speed (standalone waves on a [current]).
-    r.fail_table(
-        fmt::format("the waves cannot exist on this current ([current] velocity x = "
-                    "{} m/s): {}",
-                    format_number(w.current), e.what()));
+    // An opposing current past the blocking speed.
+    r.fail_table(fmt::format("the waves cannot exist on this current ({}): {}",
+                             wave_current_source(), e.message()));
   }
 }
 
@@ -368,17 +384,22 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
 // the theory by default, so that the paddle makes the wave the gauges are compared with.
 void CaseReader::read_generation(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
-  const PaddleGeneration fallback = w.theory == WaveTheory::Stokes2 && !w.standalone
+  // Only a paddle has a generation: a standalone case's waves and a relaxation zone's are
+  // given by their theory (the relaxation reader refuses the key itself).
+  if (!w.has_paddle()) {
+    if (const toml::node* node = r.find("generation")) {
+      r.fail_value("generation", *node,
+                   "applies to a flume's paddle; a standalone case's waves have no paddle (they "
+                   "are given by their theory): remove the key");
+    }
+    return;
+  }
+  const PaddleGeneration fallback = w.theory == WaveTheory::Stokes2
                                         ? PaddleGeneration::SecondOrder
                                         : PaddleGeneration::FirstOrder;
   w.generation = r.choice("generation", kPaddleGenerationNames, fallback);
   const toml::node* node = r.find("generation");
   if (!node || w.generation != PaddleGeneration::SecondOrder) return;
-  if (w.standalone) {
-    r.fail_value("generation", *node,
-                 "applies to a flume's paddle; a standalone case's waves have no paddle (they "
-                 "are given by their theory): remove the key");
-  }
   if (w.theory != WaveTheory::Stokes2) {
     r.fail_value("generation", *node,
                  "second-order generation makes the Stokes second-order wave, and theory = \"linear\" "
@@ -497,8 +518,8 @@ void CaseReader::read_damping() {
                    "must differ from `from`: the damping grows from `from` to `to` (to > from "
                    "for waves travelling in +x)");
     }
-    check_in_domain(r, "from", {z.from, 0, 0});
-    check_in_domain(r, "to", {z.to, 0, 0});
+    check_x_in_domain(r, "from", z.from);
+    check_x_in_domain(r, "to", z.to);
     for (const DampingSpec& other : spec_.damping) {
       if (other.name != z.name) continue;
       const toml::node* name = r.find("name");
@@ -531,6 +552,25 @@ void CaseReader::check_damping_clear_of_paddle(const TomlTableReader& r,
   if (!w.given) return;
   // Where the zone damps: s = (x - from) / (to - from) > 0. At the paddle's face (or within
   // its travel) it would damp the wave where it is made.
+  if (w.relaxation) {
+    // The relaxation zone forces fully from x_full back to the water's end: a damping zone
+    // reaching any of it would fight the wave where it is made.
+    for (const double x : {w.relaxation_full, w.relaxation_end}) {
+      if ((x - zone.from) / (zone.to - zone.from) <= 0) continue;
+      r.fail_value(
+          "to", *r.find("to"),
+          fmt::format("the zone damps from x = {} m towards x = {} m and on beyond it, which "
+                      "takes in the relaxation zone that makes the waves (x from {} to {} m, "
+                      "[waves] relaxation_zone): it would damp the wave where it is made. The "
+                      "zone must grow away from it (to {} from for waves travelling in {}x) and "
+                      "start past x = {} m",
+                      format_number(zone.from), format_number(zone.to),
+                      format_number(w.relaxation_full), format_number(w.relaxation_end),
+                      w.direction > 0 ? ">" : "<", w.direction > 0 ? "+" : "-",
+                      format_number(w.relaxation_end)));
+    }
+    return;
+  }
   const double e = w.max_excursion;
   for (const double x : {w.paddle_x - e, w.paddle_x + e}) {
     if ((x - zone.from) / (zone.to - zone.from) <= 0) continue;

@@ -393,7 +393,8 @@ std::vector<double> TomlTableReader::to_number_array(std::string_view key, const
   if (!array) {
     fail_value(
         key, node,
-        fmt::format("must be an array of numbers {}, not {}", rule.describe(), type_name(node)));
+        fmt::format("must be an array of numbers (each {}), not {}", rule.describe(),
+                    type_name(node)));
   }
   if (array->size() < min_size) {
     fail_value(key, node,

@@ -73,7 +73,7 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
   if (w.ramp >= spec.simulation.end_time) {
     scene.warnings.push_back(fmt::format(
         "[waves] ({}): the ramp, {:g} s, lasts the whole run (simulation.end_time = {:g} s): "
-        "the paddle never reaches its full stroke",
+        "the waves never reach their full height",
         w.where.str(), w.ramp, spec.simulation.end_time));
   }
   const double wavelength = w.reference_wavelength();
@@ -89,6 +89,13 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
           "water: consider generation = \"first_order\"",
           w.where.str(), kh));
     }
+  }
+  if (w.relaxation && std::fabs(w.relaxation_end - w.relaxation_full) < 0.5 * wavelength) {
+    scene.warnings.push_back(fmt::format(
+        "[waves] ({}): the relaxation zone is {:.3g} m long, under half the wavelength ({:.3g} "
+        "m): a zone that short makes a lower wave than asked for; make it one to two "
+        "wavelengths long",
+        w.where.str(), std::fabs(w.relaxation_end - w.relaxation_full), wavelength));
   }
   for (const DampingSpec& d : spec.damping) {
     const double length = std::fabs(d.to - d.from);
