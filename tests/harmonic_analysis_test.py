@@ -5,8 +5,10 @@ a free one (k2 from the dispersion relation at 2 omega) of known amplitudes, sam
 jittered times as a run's gauges are; the amplitudes come back to the interpolation's error.
 With no free harmonic, the free amplitude comes back below 1% of the bound one. A wave
 travelling in -x against a current (its wave number from (omega - k U)^2 = g k tanh kh, solved
-here by fixed-point iteration) comes back with its wavelength. Gauges at fewer than three
-positions are refused.
+here by fixed-point iteration) comes back with its wavelength. A paddle that sends back 30% of
+a reflected wave (the incident wave changes by 0.3 of the reflected one between a window
+before the reflection and one after) has that reflection coefficient (--before). Gauges at
+fewer than three positions are refused.
 Usage: harmonic_analysis_test.py <repo-root>"""
 import json
 import math
@@ -76,6 +78,29 @@ with tempfile.TemporaryDirectory() as tmp:
     assert abs(r["measured_wavelength_m"] - 2 * math.pi / kc) < 1e-4 * 2 * math.pi / kc, r
     assert abs(r["wavelength_ratio"] - 1) < 1e-4, r["wavelength_ratio"]
     assert abs(r["incident_height_m"] - 0.04) < 0.003 * 0.04, r["incident_height_m"]
+    # The paddle's reflection: before t = 10 s the incident wave alone; after it, the far end's
+    # reflection R and 0.3 R sent back by the paddle, with a phase of its own.
+    tt = np.arange(0, 24, 0.05)
+    xr = [1.0, 1.3, 1.7, 2.1, 2.5]
+    path = os.path.join(tmp, "paddle.csv")
+    with open(path, "w") as f:
+        f.write("time [s]," + ",".join(f"g{i + 1} [m]" for i in range(len(xr))) + "\n")
+        for ti in tt:
+            row = []
+            for x in xr:
+                eta = 0.03 * math.cos(k * x - omega * ti + 0.2)
+                if ti >= 10:
+                    eta += 0.025 * math.cos(-k * x - omega * ti + 1.3)
+                    eta += 0.3 * 0.025 * math.cos(k * x - omega * ti + 2.6)
+                row.append(f"{eta:.12e}")
+            f.write(f"{ti:.6f}," + ",".join(row) + "\n")
+    out = os.path.join(tmp, "paddle.json")
+    subprocess.run([sys.executable, tool, path, "--period", str(period), "--depth", str(depth),
+                    "--x", ",".join(map(str, xr)), "--from", "12", "--to", str(12 + 5 * period),
+                    "--before", f"1,{1 + 4 * period}", "--json", out], check=True)
+    r = json.load(open(out))
+    assert abs(r["paddle_reflection_coefficient"] - 0.3) < 0.01, r["paddle_reflection_coefficient"]
+    assert abs(r["paddle_incident_height_before_m"] - 0.06) < 0.001, r
     # Three gauges at one position cannot separate anything: refused with a message.
     p = subprocess.run([sys.executable, tool, os.path.join(tmp, "beating.csv"), "--period",
                         str(period), "--depth", str(depth), "--gauges", "g1,g2,g3", "--x",

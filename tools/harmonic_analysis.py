@@ -31,8 +31,12 @@ fit's condition number says so).
 Usage:
   /usr/bin/python3 tools/harmonic_analysis.py gauges.csv --period 1.946 --depth 0.5 \\
       [--current 0.2] [--gauges g1,g2,...] [--x 3.93,4.61,...] [--from 16] [--to 23.78] \\
-      [--json out.json] [--plot out.png]
+      [--before T0,T1] [--json out.json] [--plot out.png]
 
+--before T0,T1 gives a second window, before anything came back from the far end: the
+incident wave there is the paddle's own, and the change of the incident wave between the two
+windows, over the reflected wave of the main window, is the paddle's reflection coefficient
+(1 for a paddle that re-reflects everything, 0 for one that absorbs it: active absorption).
 --plot draws the first and second harmonics' amplitudes at the gauges with the fitted incident
 plus reflected, and bound plus free, waves between them (matplotlib). --gauges defaults to
 every column without "_target"; --x to the positions in the run's
@@ -124,7 +128,7 @@ def phase_wave_number(c: np.ndarray, x: np.ndarray) -> float:
 
 
 def analyse(t: np.ndarray, records: list[np.ndarray], x: list[float], period: float,
-            depth: float, current: float = 0.0) -> dict:
+            depth: float, current: float = 0.0, direction: float | None = None) -> dict:
     n = len(t)
     if np.any(np.diff(t) <= 0):
         sys.exit("the record's times do not increase")
@@ -145,9 +149,10 @@ def analyse(t: np.ndarray, records: list[np.ndarray], x: list[float], period: fl
     c1 = np.array([f[0][0] for f in fits])
     c2 = np.array([f[0][1] for f in fits])
     # A wave travelling in -x has its phase falling along x: the fits take the waves' direction
-    # from the measured phase slope.
+    # from the measured phase slope, unless it is given (a strong reflection, near a standing
+    # wave, leaves the slope's sign to chance).
     k_measured = phase_wave_number(c1, xs)
-    sign = 1.0 if k_measured >= 0 else -1.0
+    sign = direction if direction is not None else (1.0 if k_measured >= 0 else -1.0)
     inc, refl, cond1 = two_wave_fit(c1, xs, sign * k, -sign * k)
     if k2 is not None:
         bound, free, cond2 = two_wave_fit(c2, xs, sign * 2 * k, sign * k2)
@@ -157,6 +162,7 @@ def analyse(t: np.ndarray, records: list[np.ndarray], x: list[float], period: fl
     a1 = abs(inc)
     separated = {"_inc": inc, "_refl": refl, "_bound": bound, "_free": free}  # for plot()
     return separated | {
+        "direction": sign,
         "period_s": period,
         "current_m_per_s": current,
         "k_per_m": k,
@@ -248,6 +254,11 @@ def main() -> None:
     p.add_argument("--to", dest="t1", type=float, default=None, help="end time, s")
     p.add_argument("--json", default=None, help="also write the results to this file")
     p.add_argument("--plot", default=None, help="also draw the harmonics along the flume (PNG)")
+    p.add_argument("--direction", type=int, choices=(1, -1), default=None,
+                   help="the incident waves travel in +x (1) or -x (-1); default: from the "
+                   "phase along the gauges (or the --before window's)")
+    p.add_argument("--before", default=None,
+                   help="T0,T1: a window with the paddle's own wave only (paddle reflection)")
     a = p.parse_args()
     for name, v in (("--period", a.period), ("--depth", a.depth)):
         if not (math.isfinite(v) and 1e-6 < v < 1e6):
@@ -276,10 +287,10 @@ def main() -> None:
         sys.exit(f"--x has {len(xs)} positions for {len(names)} gauges")
     if len(set(xs)) < 3 or len(set(xs)) != len(xs):
         sys.exit("need at least three gauges at different positions")
-    t, recs = read_records(a.csv, names)
-    keep = (t >= (a.t0 if a.t0 is not None else -math.inf)) & (
-        t <= (a.t1 if a.t1 is not None else math.inf))
-    t, recs = t[keep], [r[keep] for r in recs]
+    t_all, recs_all = read_records(a.csv, names)
+    keep = (t_all >= (a.t0 if a.t0 is not None else -math.inf)) & (
+        t_all <= (a.t1 if a.t1 is not None else math.inf))
+    t, recs = t_all[keep], [r[keep] for r in recs_all]
     if len(t) < 16 or t[-1] - t[0] < a.period:
         sys.exit("the window holds less than one period (or fewer than 16 samples)")
     for name, r in zip(names, recs):
@@ -287,9 +298,36 @@ def main() -> None:
             sys.exit(f"gauge {name} has an infinite value in the window")
         if not np.all(np.isfinite(r)):
             sys.exit(f"gauge {name} found no water somewhere in the window (nan)")
-    r = analyse(t, recs, xs, a.period, a.depth, a.current)
+    direction = float(a.direction) if a.direction else None
+    first = None
+    if a.before:
+        try:
+            b0, b1 = (float(v) for v in a.before.split(","))
+        except ValueError:
+            sys.exit(f"--before must be T0,T1 in s, not '{a.before}'")
+        inside = (t_all >= b0) & (t_all <= b1)
+        if np.count_nonzero(inside) < 16 or not b1 - b0 >= a.period:
+            sys.exit("--before: the window holds less than one period (or fewer than 16 samples)")
+        early = [rec[inside] for rec in recs_all]
+        if not all(np.all(np.isfinite(e)) for e in early):
+            sys.exit("--before: a gauge found no water somewhere in the window (nan)")
+        first = analyse(t_all[inside], early, xs, a.period, a.depth, a.current, direction)
+        if direction is None:
+            direction = first["direction"]  # the paddle's wave alone: its direction is clear
+    r = analyse(t, recs, xs, a.period, a.depth, a.current, direction)
+    if first is not None:
+        # The fits' phases are those of absolute time (cos omega t): the two windows' complex
+        # amplitudes compare directly.
+        change = abs(r["_inc"] - first["_inc"])
+        r["paddle_incident_height_before_m"] = first["incident_height_m"]
+        r["paddle_reflection_coefficient"] = change / abs(r["_refl"]) if abs(r["_refl"]) > 0 \
+            else math.inf
     print(f"first harmonic: incident H = {r['incident_height_m']:.5g} m, Kr = "
           f"{r['reflection_coefficient']:.4f} (condition {r['condition_first']:.3g})")
+    if "paddle_reflection_coefficient" in r:
+        print(f"paddle: incident H {r['paddle_incident_height_before_m']:.5g} m before, "
+              f"{r['incident_height_m']:.5g} m after the far end's reflection came back; the "
+              f"paddle's reflection coefficient = {r['paddle_reflection_coefficient']:.4f}")
     print(f"wavelength: measured {r['measured_wavelength_m']:.4g} m, dispersion relation "
           f"{r['wavelength_m']:.4g} m{' on the current' if a.current else ''} (measured / theory "
           f"= {r['wavelength_ratio']:.4f})")

@@ -165,6 +165,14 @@ TEST(DeviceParity, HostWavesOnACurrentFromARelaxationZoneMatchesTheCpuBackend) {
       compare("waves/current_following2d.toml", kWavesOnACurrent, 200, StepBackend::HostDevice));
 }
 
+// A paddle with active absorption: the elevation at its gauge (sampled on the device, or by the
+// CPU's probe pass) corrects its velocity every step, at full height from the first step; 400
+// steps take it past the gauge-to-paddle delay (0.15 s), when the correction starts.
+TEST(DeviceParity, HostAbsorbingPaddleMatchesTheCpuBackend) {
+  expect_parity(compare("waves/absorbing_piston2d.toml", {"simulation.dp=0.04", "waves.ramp=0.0"},
+                        400, StepBackend::HostDevice));
+}
+
 // The same comparisons with every launch's threads visited in reverse and in shuffled order
 // (and, always, uninitialised device memory as 0xFF bytes: host_exec.hpp), as a GPU runs them
 // in no fixed order: a kernel in which one particle reads what another writes in the same

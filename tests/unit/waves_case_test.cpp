@@ -4,6 +4,7 @@
 // the fluid model. The reader's messages for bad input: tests/cases/bad/{waves,gauge,damping}_*.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -221,6 +222,24 @@ TEST(WavesCase, RelaxationRateHoldsNearTheBlockingSpeed) {
     EXPECT_NE(m.find("inlet 'inlet1'"), std::string::npos) << m;
     EXPECT_EQ(m.find("[current]"), std::string::npos) << m;
   }
+}
+
+// Active absorption: the gauge half a depth in front of the paddle (beyond its travel and the
+// kernel's reach), the gain omega / m1 and the gauge-to-paddle delay at the phase speed.
+TEST(WavesCase, ActiveAbsorptionIsSetUpFromTheWave) {
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_CASES_DIR) + "/waves/absorbing_piston2d.toml");
+  const WaveSpec& w = spec.waves;
+  const WaveAbsorptionSpec& a = w.absorption;
+  ASSERT_TRUE(a.active);
+  const double support = 2 * spec.simulation.h_over_dp * spec.simulation.dp;
+  const double distance = std::max(0.5 * w.depth, w.max_excursion + 2 * support);
+  EXPECT_DOUBLE_EQ(a.gauge_x, w.paddle_x + distance);
+  const RegularWave& c = w.train.components.front();
+  EXPECT_DOUBLE_EQ(a.gain, c.omega / piston_height_to_stroke(c.k * c.depth));
+  EXPECT_DOUBLE_EQ(a.delay, distance * c.k / c.omega);
+  EXPECT_GT(a.drift_time, 5 * w.period);
+  EXPECT_FALSE(flume().waves.absorption.active);  // none unless asked
 }
 
 TEST(WaveGauge, SurfaceIsWhereTheCoverageCrossesOneHalf) {

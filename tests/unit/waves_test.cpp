@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "netsph/core/error.hpp"
+#include "netsph/waves/active_absorption.hpp"
 #include "netsph/waves/dispersion.hpp"
 #include "netsph/waves/irregular_waves.hpp"
 #include "netsph/waves/paddle_motion.hpp"
@@ -426,6 +428,56 @@ TEST(SecondOrderGeneration, PaddleMotionGetsTheSecondHarmonic) {
   EXPECT_THROW(train_paddle_motion(PaddleType::Piston, irregular_wave_train(sea, 0.5, 3.0, g),
                                    PaddleGeneration::SecondOrder),
                Error);
+}
+
+// Active absorption: the correction follows the reflected elevation measured at the gauge,
+// delayed by the gauge-to-paddle travel time and scaled by the gain, to the linear
+// interpolation's error between updates; the gain omega / m1 is the classical shallow-water
+// gain sqrt(g / h) in shallow water (relative error (kh)^2 / 3 or less at kh = 0.05).
+TEST(ActiveAbsorption, CorrectionIsTheDelayedReflectedWaveTimesTheGain) {
+  const double h = 0.5, kh = 0.05, k = kh / h;
+  const double omega = intrinsic_frequency(k, h, g);
+  EXPECT_NEAR(omega / piston_height_to_stroke(kh), std::sqrt(g / h),
+              kh * kh / 3 * std::sqrt(g / h));
+  const double gain = 2.7, delay = 0.137, w = 5.0, a = 0.01, dt = 1e-3;
+  PaddleAbsorber absorber({gain, delay, 0.0});
+  for (int n = 0; n <= 3000; ++n) {
+    const double t = n * dt;
+    absorber.update(t, a * std::cos(w * t));
+    if (t < delay) {
+      EXPECT_EQ(absorber.velocity(), 0.0) << "t " << t;  // nothing has reached the paddle
+    } else {
+      // Linear interpolation of a cos sampled every dt: error a (w dt)^2 / 8 at most.
+      EXPECT_NEAR(absorber.velocity(), -gain * a * std::cos(w * (t - delay)),
+                  gain * a * (w * dt) * (w * dt) / 8 + 1e-15)
+          << "t " << t;
+    }
+  }
+}
+
+// The drift correction holds the correction's excursion: under a constant reflected elevation
+// c it settles at -G c tau instead of growing without bound (the first-order lag
+// X' = -G c - X / tau, integrated by the explicit updates with step dt << tau); a state saved
+// and restored continues exactly.
+TEST(ActiveAbsorption, DriftCorrectionBoundsTheExcursionAndStateRestores) {
+  const double gain = 2.0, tau = 5.0, c = 0.003, dt = 0.01;
+  PaddleAbsorber absorber({gain, 0.1, tau});
+  std::vector<double> saved;
+  PaddleAbsorber copy({gain, 0.1, tau});
+  for (int n = 0; n <= 6000; ++n) {
+    absorber.update(n * dt, c);
+    if (n == 2500) saved = absorber.state();
+  }
+  // After 60 s = 12 tau the lag has settled to within exp(-12) and the explicit steps' error,
+  // of order dt / tau.
+  EXPECT_NEAR(absorber.excursion(), -gain * c * tau, 2 * dt / tau * gain * c * tau);
+  copy.restore(saved);
+  PaddleAbsorber again({gain, 0.1, tau});
+  again.restore(saved);
+  for (int n = 2501; n <= 6000; ++n) again.update(n * dt, c);
+  EXPECT_EQ(again.excursion(), absorber.excursion());
+  EXPECT_EQ(again.velocity(), absorber.velocity());
+  EXPECT_THROW(copy.restore(std::vector<double>{1.0, 2.0}), Error);
 }
 
 // A sampled sine about a raised mean: every wave's period is T (the crossings interpolated

@@ -196,6 +196,8 @@ class CaseReader {
   /// [waves] with relaxation_zone: the zone, the current from the inlet, the water's levels
   /// (case_reader_relaxation.cpp).
   void read_relaxation_wavemaker(const TomlTableReader& r);
+  /// waves.absorption: the paddle's active absorption, set up from the wave and its travel.
+  void read_absorption(const TomlTableReader& r);
   /// waves.generation: first or second order, and where second order applies.
   void read_generation(const TomlTableReader& r);
   /// Sets the paddle wall's motion and checks that the tank holds its travel.

@@ -21,7 +21,7 @@ namespace netsph::case_detail {
 void CaseReader::read_relaxation_wavemaker(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
   w.relaxation = true;
-  for (const std::string_view key : {"wavemaker", "paddle", "generation"}) {
+  for (const std::string_view key : {"wavemaker", "paddle", "generation", "absorption"}) {
     if (const toml::node* node = r.find(key)) {
       r.fail_value(key, *node,
                    "applies to a paddle, and this [waves] makes its waves with a relaxation "

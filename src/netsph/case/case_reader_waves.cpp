@@ -99,6 +99,7 @@ void CaseReader::read_waves() {
   read_wave_train(r);
   check_paddle_geometry(r, maker);
   set_paddle_motion(r);
+  read_absorption(r);
   check_free_surface(r);
 }
 
@@ -118,7 +119,7 @@ std::string CaseReader::wave_current_source() const {
 void CaseReader::read_standalone_waves(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
   w.standalone = true;
-  for (const std::string_view key : {"wavemaker", "paddle", "relaxation_zone"}) {
+  for (const std::string_view key : {"wavemaker", "paddle", "relaxation_zone", "absorption"}) {
     if (const toml::node* node = r.find(key)) {
       r.fail_value(key, *node,
                    "a standalone net case (nets, no [[fill]]) has no wavemaker: its waves are "

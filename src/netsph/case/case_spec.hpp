@@ -295,6 +295,22 @@ constexpr std::string_view name_of(WaveTheory v) {
   return name_of(kWaveTheoryNames, v);
 }
 
+enum class WaveAbsorption : std::uint8_t { None, Active };
+inline constexpr std::array kWaveAbsorptionNames = {
+    EnumName<WaveAbsorption>{"none", WaveAbsorption::None},
+    EnumName<WaveAbsorption>{"active", WaveAbsorption::Active}};
+static_assert(one_to_one(kWaveAbsorptionNames));
+
+/// [waves] absorption = "active": the paddle's active absorption (waves/active_absorption.hpp),
+/// set up by the reader from the wave and the paddle's travel.
+struct WaveAbsorptionSpec {
+  bool active = false;
+  double gauge_x = 0;      ///< m: where the elevation is measured, in front of the paddle
+  double gain = 0;         ///< 1/s
+  double delay = 0;        ///< s
+  double drift_time = 0;   ///< s
+};
+
 struct WaveSpec {
   bool given = false;
   WaveKind kind = WaveKind::Regular;
@@ -327,6 +343,7 @@ struct WaveSpec {
   int direction = 1;         ///< +1: the waves travel in +x; -1: in -x
   WaveTrain train;           ///< the components, set up (derived)
   double max_excursion = 0;  ///< the paddle's largest excursion from rest over the run, m
+  WaveAbsorptionSpec absorption;  ///< the paddle's active absorption (none by default)
   SourceLocation where;
 
   /// A paddle wall makes the waves (not a standalone case's theory, not a relaxation zone).

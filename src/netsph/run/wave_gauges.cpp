@@ -15,8 +15,6 @@ namespace netsph {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 /// The rows of a gauges.csv kept by a restart: the times and every gauge's columns.
 void read_back(const std::filesystem::path& file, std::vector<double>& times,
                std::vector<std::vector<double>>& columns) {
@@ -74,16 +72,6 @@ WaveRecordSummary analyse(const std::vector<double>& t, const std::vector<double
 }
 
 }  // namespace
-
-double surface_from_coverage(const std::vector<double>& z, const std::vector<double>& coverage) {
-  for (std::size_t k = coverage.size(); k-- > 0;) {
-    if (!(coverage[k] >= kGaugeSurfaceCoverage)) continue;
-    if (k + 1 == coverage.size()) return z[k];
-    const double c0 = coverage[k], c1 = coverage[k + 1];
-    return z[k] + (c0 - kGaugeSurfaceCoverage) / (c0 - c1) * (z[k + 1] - z[k]);
-  }
-  return kNaN;
-}
 
 double gauge_interval(const CaseSpec& spec) {
   if (spec.output.gauge_every > 0) return spec.output.gauge_every;

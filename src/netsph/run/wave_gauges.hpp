@@ -28,16 +28,9 @@
 #include "netsph/run/output_particles.hpp"
 #include "netsph/run/output_schedule.hpp"
 #include "netsph/solver/simulation.hpp"
+#include "netsph/sph/free_surface.hpp"
 
 namespace netsph {
-
-/// The coverage at which a gauge puts the surface.
-inline constexpr double kGaugeSurfaceCoverage = 0.5;
-
-/// The surface's height from the coverage sampled at `z` (increasing, equally spaced): the
-/// highest crossing of kGaugeSurfaceCoverage; NaN when no sample reaches it. A top sample at or
-/// above it gives the top (the water reaches the line's end).
-double surface_from_coverage(const std::vector<double>& z, const std::vector<double>& coverage);
 
 /// The sampling interval of gauges.csv, s.
 double gauge_interval(const CaseSpec& spec);

@@ -43,6 +43,7 @@ Simulation::Simulation(const CaseSpec& spec, StepBackend backend,
     for (std::size_t k = 0; k < net.model.knots.size(); ++k)
       scene_.bodies[net.first_body + k].external_force = {};
   }
+  setup_absorber();  // before the device: its wall velocities take the correction
   if (backend_ != StepBackend::Cpu) start_device();
 }
 
@@ -279,9 +280,10 @@ void Simulation::check_dt_min_reachable(double first_dt) const {
 void Simulation::update_wall_kinematics(double dt) {
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const VelocityHistory& m = spec_.walls[w].motion;
-    walls_[w].start = Vec3f(m.at(time_));
-    walls_[w].half = Vec3f(m.at(time_ + 0.5 * dt));
-    walls_[w].end = Vec3f(m.at(time_ + dt));
+    const Vec3f correction = paddle_correction(w);  // constant over the step
+    walls_[w].start = Vec3f(m.at(time_)) + correction;
+    walls_[w].half = Vec3f(m.at(time_ + 0.5 * dt)) + correction;
+    walls_[w].end = Vec3f(m.at(time_ + dt)) + correction;
   }
 }
 
@@ -401,6 +403,7 @@ void Simulation::fail_non_finite(std::int64_t i) const {
 }
 
 void Simulation::step() {
+  update_absorber();
   if (device_) return device_step();
   const FluidModel& m = scene_.model;
 

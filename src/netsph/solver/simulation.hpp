@@ -43,6 +43,7 @@
 #include "netsph/sph/shepard.hpp"
 #include "netsph/sph/shifting.hpp"
 #include "netsph/sph/time_step.hpp"
+#include "netsph/waves/active_absorption.hpp"
 
 namespace netsph {
 
@@ -134,6 +135,8 @@ class Simulation {
     return p_;
   }
   double time() const { return time_; }
+  /// The paddle's active absorber ([waves] absorption = "active"), null without one.
+  const PaddleAbsorber* absorber() const { return absorber_.get(); }
   std::int64_t steps() const { return steps_; }
   double last_dt() const { return diag_.dt_limits.dt; }
   const StepDiagnostics& diagnostics() const { return diag_; }
@@ -212,6 +215,13 @@ class Simulation {
   void set_view_continuity_velocity(bool half_step);
   double compute_dt(const RateReductions& r);
   void update_wall_kinematics(double dt);
+  /// [waves] absorption = "active" (solver/paddle_absorption.cpp): the absorber and its
+  /// gauge, set up once; at each step's start the elevation measured at the gauge, less the
+  /// target, updates the paddle's correction velocity; paddle_correction(w) is that velocity
+  /// for wall w (zero for the others, and without absorption).
+  void setup_absorber();
+  void update_absorber();
+  Vec3f paddle_correction(std::size_t wall) const;
   void apply_open_boundary_state();
   /// The state of mDBC wall and body particles from their ghost nodes; reads the fluid's from
   /// view_ (built before) and refreshes the solids' entries in it.
@@ -281,6 +291,13 @@ class Simulation {
 
   StepPartition* partition_ = nullptr;
   std::vector<std::uint8_t> owned_;  // with a partition: which particles this process owns
+
+  // The paddle's active absorption: the absorber, and its gauge's sample points up a vertical
+  // line with their heights and the scratch of each measurement.
+  std::unique_ptr<PaddleAbsorber> absorber_;
+  std::vector<Vec3d> absorber_points_;
+  std::vector<double> absorber_z_, absorber_coverage_;
+  std::vector<ShepardValue> absorber_values_;
 
   StepBackend backend_ = StepBackend::Cpu;
   std::unique_ptr<DeviceRun> device_;

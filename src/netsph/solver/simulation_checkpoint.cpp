@@ -176,6 +176,8 @@ void Simulation::save_global_state(CheckpointData& c) const {
     at_bar.push_back(static_cast<double>(net.reactions_at_bar));
     at_bar.push_back(static_cast<double>(net.first_knot_reacting_at_bar));
   }
+  // The paddle's active absorption: its correction and the elevations its delay still needs.
+  if (absorber_) c.f64["waves.absorber"] = absorber_->state();
 }
 
 void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
@@ -287,6 +289,11 @@ void Simulation::restore_state(const CheckpointData& c, const AxisRange& keep) {
       nets_[i].reactions_at_bar = static_cast<std::size_t>(a->second[2 * i]);
       nets_[i].first_knot_reacting_at_bar = static_cast<std::size_t>(a->second[2 * i + 1]);
     }
+  }
+  if (absorber_) {
+    const auto a = c.f64.find("waves.absorber");
+    if (a == c.f64.end()) fail("the paddle's active absorption is missing");
+    absorber_->restore(a->second);
   }
   // The device backends continue from the restored particles and bodies.
   if (device_) start_device();

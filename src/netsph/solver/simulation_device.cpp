@@ -34,7 +34,7 @@ void Simulation::start_device() {
   for (const WallSpec& w : spec_.walls) moving |= w.motion.moving();
   if (moving) {
     setup.wall_velocity = [this](std::size_t w, double t) {
-      return Vec3f(spec_.walls[w].motion.at(t));
+      return Vec3f(spec_.walls[w].motion.at(t)) + paddle_correction(w);
     };
   }
   if (backend_ == StepBackend::HostDevice) {

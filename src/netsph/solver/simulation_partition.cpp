@@ -8,6 +8,12 @@ void Simulation::set_partition(StepPartition* partition) {
   if (partition && backend_ != StepBackend::Cpu) {
     throw Error("solver", "a distributed run (more than one MPI process) needs the CPU backend");
   }
+  if (partition && absorber_) {
+    throw Error(spec_.waves.where.str(),
+                "waves.absorption = \"active\" is not supported in a run split over processes "
+                "yet (its gauge's elevation would need a reduction every step): run the case on "
+                "one process, or use a damping zone");
+  }
   partition_ = partition;
   if (!partition_) owned_ = {};
 }

@@ -1,0 +1,56 @@
+// The paddle's active absorption in the step (waves/active_absorption.hpp): at each step's
+// start the surface is measured on a vertical line at the absorber's gauge (the kernel
+// coverage falling through one half, as wave gauges read it: sph/free_surface.hpp), the target
+// elevation there is subtracted, and the absorber sets the paddle's correction velocity for the
+// step. Both the CPU step and the device step take the correction through the wall's velocity
+// (update_wall_kinematics; the device's wall_velocity), so the paddle's particles move with it.
+#include <cmath>
+
+#include "netsph/backend/cpu/probe_pass.hpp"
+#include "netsph/solver/simulation.hpp"
+#include "netsph/sph/free_surface.hpp"
+
+namespace netsph {
+
+void Simulation::setup_absorber() {
+  const WaveSpec& w = spec_.waves;
+  if (!w.given || !w.absorption.active) return;
+  absorber_ = std::make_unique<PaddleAbsorber>(
+      AbsorberSettings{w.absorption.gain, w.absorption.delay, w.absorption.drift_time});
+  // From the bed to two wave heights above the still water, every quarter spacing (the
+  // gauges' sampling: the surface interpolated between samples to a fraction of that).
+  const double dz = spec_.simulation.dp / 4;
+  const double bottom = w.still_level - w.depth, top = w.still_level + 2 * w.reference_height();
+  const auto n = static_cast<std::size_t>(std::ceil((top - bottom) / dz)) + 1;
+  const double y = 0.5 * (spec_.domain.min.y + spec_.domain.max.y);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double z = std::min(bottom + static_cast<double>(k) * dz, top);
+    absorber_z_.push_back(z);
+    absorber_points_.push_back({w.absorption.gauge_x, y, z});
+  }
+  absorber_values_.resize(n);
+  absorber_coverage_.resize(n);
+}
+
+void Simulation::update_absorber() {
+  if (!absorber_) return;
+  // At the first step the water is at rest and nothing has come back: no measurement.
+  double reflected = 0;
+  if (steps_ > 0) {
+    if (!sample_on_device(absorber_points_, absorber_values_))
+      sample_points(scene_.model, grid_, p_, absorber_points_, absorber_values_);
+    for (std::size_t k = 0; k < absorber_values_.size(); ++k)
+      absorber_coverage_[k] = absorber_values_[k].coverage;
+    const WaveSpec& w = spec_.waves;
+    const double eta = surface_from_coverage(absorber_z_, absorber_coverage_) - w.still_level;
+    reflected = eta - w.target_elevation(w.absorption.gauge_x, time_);
+  }
+  absorber_->update(time_, reflected);
+}
+
+Vec3f Simulation::paddle_correction(std::size_t wall) const {
+  if (!absorber_ || wall != spec_.waves.wall) return {};
+  return Vec3f(Vec3d{spec_.waves.direction * absorber_->velocity(), 0, 0});
+}
+
+}  // namespace netsph
