@@ -194,7 +194,7 @@ def plot(r: dict, path: str, title: str) -> None:
     import matplotlib.pyplot as plt
     xs = np.array([g["x_m"] for g in r["gauges"]])
     x = np.linspace(xs.min(), xs.max(), 400)
-    sign = 1.0 if r["measured_wavelength_m"] > 0 else -1.0
+    sign = r["direction"]
     fit1 = np.abs(r["_inc"] * np.exp(1j * sign * r["k_per_m"] * x) +
                   r["_refl"] * np.exp(-1j * sign * r["k_per_m"] * x))
     k2 = r["k2_free_per_m"] if r["k2_free_per_m"] is not None else 0.0
@@ -258,7 +258,8 @@ def main() -> None:
                    help="the incident waves travel in +x (1) or -x (-1); default: from the "
                    "phase along the gauges (or the --before window's)")
     p.add_argument("--before", default=None,
-                   help="T0,T1: a window with the paddle's own wave only (paddle reflection)")
+                   help="T0,T1 (write --before=T0,T1 if T0 is negative): a window before the "
+                   "main one with the paddle's own wave only (paddle reflection)")
     a = p.parse_args()
     for name, v in (("--period", a.period), ("--depth", a.depth)):
         if not (math.isfinite(v) and 1e-6 < v < 1e6):
@@ -291,7 +292,7 @@ def main() -> None:
     keep = (t_all >= (a.t0 if a.t0 is not None else -math.inf)) & (
         t_all <= (a.t1 if a.t1 is not None else math.inf))
     t, recs = t_all[keep], [r[keep] for r in recs_all]
-    if len(t) < 16 or t[-1] - t[0] < a.period:
+    if len(t) < 16 or t[-1] - t[0] < a.period:  # the data actually in the window
         sys.exit("the window holds less than one period (or fewer than 16 samples)")
     for name, r in zip(names, recs):
         if np.any(np.isinf(r)):
@@ -305,9 +306,14 @@ def main() -> None:
             b0, b1 = (float(v) for v in a.before.split(","))
         except ValueError:
             sys.exit(f"--before must be T0,T1 in s, not '{a.before}'")
+        if a.t0 is None or not b1 <= a.t0:
+            sys.exit(f"--before {a.before}: the window must end at or before the main window's "
+                     f"start (--from{'' if a.t0 is None else ' = ' + format(a.t0, 'g')}): it holds "
+                     "the paddle's wave before anything came back")
         inside = (t_all >= b0) & (t_all <= b1)
-        if np.count_nonzero(inside) < 16 or not b1 - b0 >= a.period:
-            sys.exit("--before: the window holds less than one period (or fewer than 16 samples)")
+        if np.count_nonzero(inside) < 16 or not t_all[inside][-1] - t_all[inside][0] >= a.period:
+            sys.exit("--before: the record holds less than one period (or fewer than 16 samples) "
+                     "in that window")
         early = [rec[inside] for rec in recs_all]
         if not all(np.all(np.isfinite(e)) for e in early):
             sys.exit("--before: a gauge found no water somewhere in the window (nan)")

@@ -198,6 +198,8 @@ class CaseReader {
   void read_relaxation_wavemaker(const TomlTableReader& r);
   /// waves.absorption: the paddle's active absorption, set up from the wave and its travel.
   void read_absorption(const TomlTableReader& r);
+  /// No wall's x face within the kernel's reach of the absorber's gauge.
+  void check_absorber_gauge_clear(const TomlTableReader& r, const toml::node& node) const;
   /// waves.generation: first or second order, and where second order applies.
   void read_generation(const TomlTableReader& r);
   /// Sets the paddle wall's motion and checks that the tank holds its travel.

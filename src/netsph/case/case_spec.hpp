@@ -306,9 +306,11 @@ static_assert(one_to_one(kWaveAbsorptionNames));
 struct WaveAbsorptionSpec {
   bool active = false;
   double gauge_x = 0;      ///< m: where the elevation is measured, in front of the paddle
+  double gauge_y = 0;      ///< m: the middle of the water's width there
   double gain = 0;         ///< 1/s
   double delay = 0;        ///< s
   double drift_time = 0;   ///< s
+  double mean_time = 0;    ///< s: the running mean taken from the measured elevation
 };
 
 struct WaveSpec {

@@ -16,13 +16,14 @@ void Simulation::setup_absorber() {
   const WaveSpec& w = spec_.waves;
   if (!w.given || !w.absorption.active) return;
   absorber_ = std::make_unique<PaddleAbsorber>(
-      AbsorberSettings{w.absorption.gain, w.absorption.delay, w.absorption.drift_time});
+      AbsorberSettings{w.absorption.gain, w.absorption.delay, w.absorption.drift_time,
+                       w.absorption.mean_time});
   // From the bed to two wave heights above the still water, every quarter spacing (the
   // gauges' sampling: the surface interpolated between samples to a fraction of that).
   const double dz = spec_.simulation.dp / 4;
   const double bottom = w.still_level - w.depth, top = w.still_level + 2 * w.reference_height();
   const auto n = static_cast<std::size_t>(std::ceil((top - bottom) / dz)) + 1;
-  const double y = 0.5 * (spec_.domain.min.y + spec_.domain.max.y);
+  const double y = w.absorption.gauge_y;
   for (std::size_t k = 0; k < n; ++k) {
     const double z = std::min(bottom + static_cast<double>(k) * dz, top);
     absorber_z_.push_back(z);
@@ -33,19 +34,18 @@ void Simulation::setup_absorber() {
 }
 
 void Simulation::update_absorber() {
-  if (!absorber_) return;
-  // At the first step the water is at rest and nothing has come back: no measurement.
-  double reflected = 0;
-  if (steps_ > 0) {
-    if (!sample_on_device(absorber_points_, absorber_values_))
-      sample_points(scene_.model, grid_, p_, absorber_points_, absorber_values_);
-    for (std::size_t k = 0; k < absorber_values_.size(); ++k)
-      absorber_coverage_[k] = absorber_values_[k].coverage;
-    const WaveSpec& w = spec_.waves;
-    const double eta = surface_from_coverage(absorber_z_, absorber_coverage_) - w.still_level;
-    reflected = eta - w.target_elevation(w.absorption.gauge_x, time_);
-  }
-  absorber_->update(time_, reflected);
+  // At the first step the water is at rest, and the grid not yet sorted: the first reading,
+  // which sets the water's own level, is the second step's.
+  if (!absorber_ || steps_ == 0) return;
+  // The device samples with the cell table of its last step; the CPU step calls this right
+  // after its sort, so that a restarted run (which sorts afresh) reads the same sums.
+  if (!sample_on_device(absorber_points_, absorber_values_))
+    sample_points(scene_.model, grid_, p_, absorber_points_, absorber_values_);
+  for (std::size_t k = 0; k < absorber_values_.size(); ++k)
+    absorber_coverage_[k] = absorber_values_[k].coverage;
+  const WaveSpec& w = spec_.waves;
+  const double eta = surface_from_coverage(absorber_z_, absorber_coverage_) - w.still_level;
+  absorber_->update(time_, eta - w.target_elevation(w.absorption.gauge_x, time_));
 }
 
 Vec3f Simulation::paddle_correction(std::size_t wall) const {

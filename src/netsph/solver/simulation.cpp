@@ -403,8 +403,10 @@ void Simulation::fail_non_finite(std::int64_t i) const {
 }
 
 void Simulation::step() {
-  update_absorber();
-  if (device_) return device_step();
+  if (device_) {
+    update_absorber();
+    return device_step();
+  }
   const FluidModel& m = scene_.model;
 
   // Open boundaries first: conversions use positions only, and the sort then places the
@@ -427,6 +429,7 @@ void Simulation::step() {
   diag_.open.absorbed += ob.absorbed;
   const std::size_t lost_before = diag_.lost_total;
   sort_particles(false);
+  update_absorber();
   diag_.lost_total -= ob.removed;  // left through an outlet: not lost
   // A distributed run checks its processes' losses together, between steps.
   if (!partition_) check_lost(diag_.lost_total - lost_before);

@@ -12,7 +12,12 @@
 // sqrt(g / h), the classical absorber gain (Milgram 1970). The gauge stands d in front of the
 // paddle, and the reflected wave reaches the paddle d / c later (c = omega / k): delay. X_c is
 // the correction's own excursion; the slow restoring term keeps it from drifting (its effect
-// at the waves' frequency is 1 / (omega drift_time), under 2% at ten periods).
+// at the waves' frequency is 1 / (omega drift_time), under 2% at ten periods). A steady
+// offset of the measured level is no wave to absorb (the still level a fill's particle layers
+// make differs from the case's by up to half a spacing; the mean level sets down under waves):
+// eta_R is taken relative to its running mean (time scale mean_time, started at the first
+// reading), a high-pass whose phase lead at the waves' frequency is 1 / (omega mean_time),
+// about 3 degrees at three periods.
 // Host code: the paddle's velocity is evaluated on the host once per step for every backend.
 #include <span>
 #include <vector>
@@ -23,6 +28,7 @@ struct AbsorberSettings {
   double gain = 0;        ///< G, 1/s (m/s of paddle velocity per m of elevation)
   double delay = 0;       ///< s: from the gauge to the paddle at the phase speed
   double drift_time = 0;  ///< s (0: no drift correction)
+  double mean_time = 0;   ///< s: the running mean's time scale (0: no mean removed)
 };
 
 class PaddleAbsorber {
@@ -47,7 +53,7 @@ class PaddleAbsorber {
   double delayed(double t) const;
 
   AbsorberSettings s_;
-  double velocity_ = 0, excursion_ = 0, last_time_ = 0;
+  double velocity_ = 0, excursion_ = 0, last_time_ = 0, mean_ = 0;
   bool started_ = false;
   std::vector<double> times_, etas_;  ///< the records still needed for the delay
 };
