@@ -326,6 +326,7 @@ int run_command(const RunArgs& args) {
     const std::filesystem::path file = checkpoint_path(restart_dir);
     checkpoint = coll ? read_checkpoint_file(file, Simulation::particle_rows(AxisRange::nothing()))
                       : read_checkpoint_file(file);
+    if (!checkpoint.unchecked.empty()) spdlog::warn("{}: {}", file.string(), checkpoint.unchecked);
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
     check_checkpoint_is_the_folders(restart_dir, spec, recorded_overrides(checkpoint));
     const double at = checkpoint.real("sim.time");
