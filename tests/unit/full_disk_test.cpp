@@ -3,7 +3,7 @@
 // keep the previous checkpoint.h5 byte for byte, leave no temporary file, close every HDF5
 // object, print nothing of HDF5's own, and leave the process able to exit normally (HDF5 at
 // exit used to crash on a file it could not close: SIGSEGV in H5F__close_cb, or "HDF5:
-// infinite loop closing library"). Each write runs in a child
+// infinite loop closing library"). The snapshot writer likewise. Each write runs in a child
 // process, so that its exit is part of the test. Two ways to fail: RLIMIT_FSIZE (writes past
 // the limit fail with EFBIG; any user may set it) at limits that cut the file at many points,
 // and, as root, a small tmpfs filled to many levels (ENOSPC, the real thing).
@@ -28,6 +28,7 @@
 
 #include "netsph/core/error.hpp"
 #include "netsph/io/checkpoint_file.hpp"
+#include "netsph/io/snapshot_writer.hpp"
 
 namespace netsph {
 namespace {
@@ -255,6 +256,43 @@ TEST(FullDisk, ADiskThatFillsBeforeTheMetadataIsWrittenKeepsThePreviousCheckpoin
             kAsExpected)
       << err;
   expect_one_message(err, "disk filled after the data");
+}
+
+/// In the child: a snapshot that cannot be written is one netsph::Error and no file.
+int failing_snapshot_write(const fs::path& dir, std::size_t n) {
+  SnapshotWriter writer(dir);
+  std::vector<Vec3d> position(n, Vec3d{1, 2, 3});
+  std::vector<Vec3f> velocity(n);
+  std::vector<float> density(n, 1000.f), pressure(n);
+  std::vector<std::uint8_t> kind(n);
+  std::vector<std::uint32_t> id(n);
+  SnapshotFields fields{0.1, 3, position, velocity, density, pressure, kind, id};
+  const int descriptors = open_descriptors();
+  try {
+    writer.write(fields);
+    return kNoError;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "netsph::Error: %s\n", e.what());
+    if (std::string(e.what()).find("particles_000000.h5") == std::string::npos) return kBadMessage;
+  }
+  if (fs::exists(dir / "snapshots" / "particles_000000.h5")) return kLeftovers;
+  if (H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL) != 0) return kOpenObjects;
+  if (open_descriptors() != descriptors) return kOpenFiles;
+  return kAsExpected;
+}
+
+TEST(FullDisk, AFailedSnapshotIsOneMessageAndNoFile) {
+  TempDir tmp;
+  std::string err;
+  constexpr std::size_t n = 50000;  // 2.2 MB of snapshot
+  for (const rlim_t limit : {rlim_t{0}, rlim_t{2000}, rlim_t{500000}, rlim_t{2000000}}) {
+    const std::string where = "file size limit " + std::to_string(limit);
+    EXPECT_EQ(in_child([&] { return failing_snapshot_write(tmp.path() / "out", n); }, err, limit),
+              kAsExpected)
+        << where << ":\n"
+        << err;
+    expect_one_message(err, where);
+  }
 }
 
 }  // namespace
