@@ -152,7 +152,14 @@ std::vector<T> read_dataset(hid_t file, const char* name, hid_t mem_type, hid_t 
   H5Sget_simple_extent_dims(space.id, dims.data(), nullptr);
   EXPECT_EQ(dims, expected_dims) << name;
   H5Closer dcpl{H5Dget_create_plist(dset.id), H5Pclose};
-  EXPECT_EQ(H5Pget_layout(dcpl.id), H5D_CONTIGUOUS) << name;
+  // Chunked, each chunk with a checksum that every reader verifies.
+  EXPECT_EQ(H5Pget_layout(dcpl.id), H5D_CHUNKED) << name;
+  unsigned flags = 0;
+  std::size_t values = 0;
+  EXPECT_GE(H5Pget_filter_by_id2(dcpl.id, H5Z_FILTER_FLETCHER32, &flags, &values, nullptr, 0,
+                                 nullptr, nullptr),
+            0)
+      << name << ": no checksum";
 
   hsize_t count = 1;
   for (hsize_t d : dims) count *= d;
@@ -417,6 +424,38 @@ TEST(SnapshotWriter, Hdf5FailureGivesOneMessageNamingTheFile) {
   EXPECT_TRUE(fs::is_directory(in_the_way)) << "only a partial file of ours may be removed";
   EXPECT_EQ(writer.count(), 0);
   EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
+}
+
+TEST(SnapshotWriter, ADamagedSnapshotFailsToReadInsteadOfShowingOtherValues) {
+  TempDir tmp;
+  netsph::SnapshotWriter writer(tmp.path());
+  const Particles p = make_particles(1000, 0);
+  const fs::path h5 = writer.write(p.fields());
+  // One byte of the densities, found by their values, changed.
+  std::string bytes = read_text(h5);
+  const std::string density(reinterpret_cast<const char*>(p.density.data()),
+                            p.density.size() * sizeof(float));
+  const std::size_t at = bytes.find(density.substr(0, 64));
+  ASSERT_NE(at, std::string::npos);
+  ASSERT_EQ(bytes.find(density.substr(0, 64), at + 1), std::string::npos);
+  bytes[at + 100] = static_cast<char>(bytes[at + 100] ^ 0x10);
+  write_text(h5, bytes);
+  H5E_auto2_t print = nullptr;
+  void* print_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &print, &print_data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // the failure expected is no news
+  {
+    H5Closer file{H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+    ASSERT_GE(file.id, 0);
+    H5Closer dset{H5Dopen2(file.id, "density", H5P_DEFAULT), H5Dclose};
+    std::vector<float> density_read(p.density.size());
+    EXPECT_LT(H5Dread(dset.id, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                      density_read.data()),
+              0)
+        << "a damaged snapshot was read";
+  }
+  H5Eclear2(H5E_DEFAULT);
+  H5Eset_auto2(H5E_DEFAULT, print, print_data);
 }
 
 TEST(SnapshotWriter, RejectsBaseNamesThatBreakPaths) {

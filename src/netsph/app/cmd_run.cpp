@@ -55,9 +55,27 @@ void warn_if_snapshots_overfill(const Simulation& sim, OutputParticles& particle
         format_bytes(v.total()), at.string(), format_bytes(free_bytes));
   }
 }
-extern "C" void on_interrupt(int) {
-  request_stop();
+extern "C" void on_interrupt(int signal) {
+  request_stop(signal);
 }
+
+/// While it lives, Ctrl-C (SIGINT), SIGTERM (a scheduler ending the job) and SIGHUP (the
+/// terminal or its ssh session closed) end the run after the current step, with its final
+/// outputs and checkpoint, rather than kill it.
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    for (const int s : kSignals) std::signal(s, on_interrupt);
+  }
+  ~StopOnSignals() {
+    for (const int s : kSignals) std::signal(s, SIG_DFL);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+
+ private:
+  static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+};
 
 /// The case a run folder's summary.json says its run ran (none without a readable one: a run
 /// killed before its end writes none).
@@ -115,11 +133,10 @@ int run_net_only(const CaseSpec& spec, const std::filesystem::path& out, bool qu
   opt.progress = !quiet;
   // Ctrl-C ends the run at its next series row with every output written, as an SPH run's.
   opt.stop = stop_requested;
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
-  const NetRunReport r = run_standalone_nets(spec, opt);
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  const NetRunReport r = [&] {
+    const StopOnSignals stop_on_signals;
+    return run_standalone_nets(spec, opt);
+  }();
   for (const NetRunSummary& n : r.nets) {
     if (!std::isfinite(n.mean_force.x)) {
       spdlog::info("net '{}': {} knots, {} twines; largest deflection {:.4g} m", n.name, n.knots,
@@ -326,6 +343,7 @@ int run_command(const RunArgs& args) {
     const std::filesystem::path file = checkpoint_path(restart_dir);
     checkpoint = coll ? read_checkpoint_file(file, Simulation::particle_rows(AxisRange::nothing()))
                       : read_checkpoint_file(file);
+    if (!checkpoint.unchecked.empty()) spdlog::warn("{}: {}", file.string(), checkpoint.unchecked);
     spec = restart_case(checkpoint, args.case_choice.overrides, overrides);
     check_checkpoint_is_the_folders(restart_dir, spec, recorded_overrides(checkpoint));
     const double at = checkpoint.real("sim.time");
@@ -400,8 +418,7 @@ int run_command(const RunArgs& args) {
                  spec.simulation.end_time);
   }
 
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  const StopOnSignals stop_on_signals;
   RunOptions opt;
   opt.out_dir = out;
   opt.progress = !args.quiet;
@@ -420,8 +437,6 @@ int run_command(const RunArgs& args) {
     spdlog::error("process {}: {}", coll->rank(), e.what());
     MpiSession::abort(2);
   }
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
   return status;
 }
 

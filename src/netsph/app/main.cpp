@@ -4,6 +4,8 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include <csignal>
+
 #include "netsph/app/commands.hpp"
 #include "netsph/app/logging.hpp"
 #include "netsph/case/builtin_cases.hpp"
@@ -45,6 +47,12 @@ std::vector<double> parse_sizes(const std::string& text) {
 
 int main(int argc, char** argv) {
   using namespace netsph::app;
+  // A run outlives its readers: a closed pipe (`netsph run ... | head`, a plot script that
+  // died) makes the write fail instead of killing the run (SIGPIPE), and a write past the file
+  // size limit (`ulimit -f`) fails as a full disk does, with the previous checkpoint kept,
+  // instead of killing it with a core dump (SIGXFSZ).
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"netsph: SPH for fluid flow through flexible aquaculture nets"};
   app.set_version_flag("--version", std::string("netsph ") + NETSPH_VERSION);
   app.require_subcommand(0, 1);

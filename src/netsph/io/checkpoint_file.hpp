@@ -3,8 +3,11 @@
 // texts in one HDF5 file (groups /f64, /f32, /u32, /u8, /text), stored bit for bit, so that a
 // run restarted from it continues exactly as the run that wrote it would have. What the arrays
 // hold is the business of the code that fills them (solver/simulation_checkpoint.cpp,
-// RunOutputs::save_state); this file only stores them. Written to a temporary file and
-// renamed, so that a run that dies while writing keeps its previous checkpoint.
+// RunOutputs::save_state); this file only stores them. Every dataset, the texts included,
+// carries a Fletcher-32 checksum per chunk, and its metadata checksums of its own (HDF5 1.10
+// format): a file damaged after it was written is refused when read, naming the dataset.
+// Written to a temporary file, synced to the disk and renamed, so that a run that dies while
+// writing, or a write that fails (a full disk), keeps the previous checkpoint.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -27,6 +30,9 @@ struct CheckpointData {
   double real(const std::string& name) const;  ///< the first element of reals(name)
   const std::string& text_of(const std::string& name) const;
   std::string source;  ///< the file it was read from (for messages)
+  /// Why the data could not be checked for damage (a checkpoint from before checksums: read,
+  /// but the reader should warn), or empty.
+  std::string unchecked;
 };
 
 /// Arrays that come in pieces (a distributed run's particles, one process's at a time): the
@@ -39,7 +45,8 @@ using CheckpointPieces =
 /// `data` had held it whole.
 void write_checkpoint_file(const std::filesystem::path& path, const CheckpointData& data,
                            const CheckpointPieces& pieces = {});
-/// Throws netsph::Error naming the file when it cannot be read or is not a checkpoint.
+/// Throws netsph::Error naming the file when it cannot be read or is not a checkpoint, and
+/// naming the dataset too when its data or metadata do not match their checksums.
 CheckpointData read_checkpoint_file(const std::filesystem::path& path);
 
 /// Some rows of arrays that hold one row per item (a distributed process's particles): row r

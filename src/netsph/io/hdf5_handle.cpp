@@ -5,6 +5,15 @@
 namespace netsph::h5 {
 namespace {
 
+// HDF5's clean-up at exit (H5_term_library) frees memory that the system frees anyway, and it
+// cannot finish when HDF5 itself leaked on an error path: reading a damaged file (an object
+// header whose checksum does not match) leaves blocks on its free lists, and the clean-up then
+// prints "HDF5: infinite loop closing library" and a screen of codes after netsph's one clear
+// message. netsph closes every file it opens itself (h5::Handle, h5::OutputFile), so the
+// clean-up has nothing to save: it is turned off, here, before anything starts HDF5 (it must
+// be, to take effect; this file is linked wherever netsph calls HDF5).
+const bool kNoCleanUpAtExit = [] { return H5dont_atexit() >= 0; }();
+
 // H5E_WALK_UPWARD visits the most specific error first (n == 0): the low-level cause,
 // which is what a user can act on ("No such file or directory"), not "unable to create file".
 herr_t keep_innermost(unsigned n, const H5E_error2_t* err, void* data) {

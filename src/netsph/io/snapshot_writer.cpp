@@ -4,6 +4,7 @@
 
 #include <array>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <system_error>
 #include <type_traits>
@@ -11,6 +12,8 @@
 #include "netsph/core/error.hpp"
 #include "netsph/io/atomic_file.hpp"
 #include "netsph/io/hdf5_handle.hpp"
+#include "netsph/io/hdf5_layout.hpp"
+#include "netsph/io/hdf5_output_file.hpp"
 #include "netsph/io/output_folder.hpp"
 
 namespace netsph {
@@ -64,27 +67,23 @@ using h5::check_id;
 using h5::check_status;
 using h5::fail;
 
-// Plain contiguous layout (no chunking, no compression: snapshots are written often and
-// must be fast), and no fill value: every byte is written by H5Dwrite right after.
-h5::Handle contiguous_layout(const fs::path& path) {
-  h5::Handle dcpl(check_id(H5Pcreate(H5P_DATASET_CREATE), path, "H5Pcreate failed"), H5Pclose);
-  check_status(H5Pset_layout(dcpl.get(), H5D_CONTIGUOUS), path, "H5Pset_layout failed");
-  check_status(H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER), path, "H5Pset_fill_time failed");
-  return dcpl;
-}
-
-// Creates dataset `f` for n particles (written in pieces by write_rows).
-h5::Handle create_dataset(hid_t file, hid_t dcpl, const FieldSpec& f, std::size_t n,
-                          const fs::path& path) {
+// Creates dataset `f` for n particles (written in pieces by write_rows), kept by `file`:
+// chunked with a checksum per chunk (hdf5_layout.hpp), which ParaView and h5py verify as they
+// read; rows unlimited only so that a snapshot of no particle can be chunked too.
+hid_t create_dataset(h5::OutputFile& file, const FieldSpec& f, std::size_t n) {
+  const fs::path& path = file.path();
   const std::string what = std::string("cannot create dataset /") + f.name;
-  const std::array<hsize_t, 2> dims = {n, static_cast<hsize_t>(f.components)};
-  h5::Handle space(
-      check_id(H5Screate_simple(f.components == 1 ? 1 : 2, dims.data(), nullptr), path, what),
-      H5Sclose);
-  return h5::Handle(
-      check_id(H5Dcreate2(file, f.name, file_type(f), space.get(), H5P_DEFAULT, dcpl, H5P_DEFAULT),
-               path, what),
-      H5Dclose);
+  const hsize_t width = static_cast<hsize_t>(f.components);
+  const std::array<hsize_t, 2> dims = {n, width}, most = {H5S_UNLIMITED, width};
+  const int rank = f.components == 1 ? 1 : 2;
+  const h5::Handle space(check_id(H5Screate_simple(rank, dims.data(), most.data()), path, what),
+                         H5Sclose);
+  const h5::Handle dcpl = h5::checksummed_layout(h5::chunk_rows(n, width), width, path);
+  const h5::Handle dapl = h5::uncached_access(path);
+  return file.keep(h5::Handle(check_id(H5Dcreate2(file.get(), f.name, file_type(f), space.get(),
+                                                  H5P_DEFAULT, dcpl.get(), dapl.get()),
+                                       path, what),
+                              H5Dclose));
 }
 
 // Writes rows [at, at + m) of dataset `f` from `data` (m rows of the caller's memory).
@@ -246,19 +245,10 @@ struct SnapshotPieces::Impl {
   double time = 0;
   std::int64_t step = 0;
   std::size_t n = 0, at = 0;  // particles in all, and written so far
-  h5::Handle file;
-  std::array<h5::Handle, kFields.size()> datasets;
-  bool finished = false;
-
-  ~Impl() {
-    if (finished || !file.valid()) return;
-    // From H5Fcreate on the file is ours: a half-written one would only mislead whoever opens
-    // the folder later. (Before it succeeded, whatever is at `path` is someone else's.)
-    for (h5::Handle& d : datasets) d.close();
-    file.close();
-    std::error_code ignored;
-    fs::remove(path, ignored);
-  }
+  // Unfinished when destroyed (an error on the way), the file removes itself: a half-written
+  // one would only mislead whoever opens the folder later.
+  std::optional<h5::OutputFile> file;
+  std::array<hid_t, kFields.size()> datasets{};  // kept by the file
 };
 
 SnapshotPieces::SnapshotPieces(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -273,14 +263,11 @@ SnapshotPieces SnapshotWriter::begin(double time, std::int64_t step, std::size_t
   impl->path = dir_ / impl->relative;
   impl->time = time, impl->step = step, impl->n = n;
   const fs::path& path = impl->path;
-  impl->file = h5::Handle(check_id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                                   path, "cannot create the HDF5 file"),
-                          H5Fclose);
-  const h5::Handle dcpl = contiguous_layout(path);
+  h5::OutputFile& file = impl->file.emplace(path, "cannot create the HDF5 file");
   for (std::size_t i = 0; i < kFields.size(); ++i)
-    impl->datasets[i] = create_dataset(impl->file.get(), dcpl.get(), kFields[i], n, path);
-  write_scalar_attribute(impl->file.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
-  write_scalar_attribute(impl->file.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step, path);
+    impl->datasets[i] = create_dataset(file, kFields[i], n);
+  write_scalar_attribute(file.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time, path);
+  write_scalar_attribute(file.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step, path);
   return SnapshotPieces(std::move(impl));
 }
 
@@ -301,7 +288,7 @@ void SnapshotPieces::append(const SnapshotFields& s) {
       connectivity.data(), s.position.data(), s.velocity.data(), s.density.data(),
       s.pressure.data(),   s.kind.data(),     s.id.data()};
   for (std::size_t i = 0; i < kFields.size(); ++i)
-    write_rows(w.datasets[i].get(), kFields[i], w.at, m, data[i], w.path);
+    write_rows(w.datasets[i], kFields[i], w.at, m, data[i], w.path);
   w.at += m;
 }
 
@@ -311,16 +298,8 @@ std::filesystem::path SnapshotPieces::finish() {
     throw Error(w.path.string(),
                 fmt::format("snapshot pieces hold {} particles, {} were announced", w.at, w.n));
   }
-  {
-    const h5::SilenceErrors silence;
-    for (std::size_t i = 0; i < kFields.size(); ++i) {
-      check_status(w.datasets[i].close(), w.path,
-                   std::string("cannot write dataset /") + kFields[i].name);
-    }
-    // Closing flushes the file: a full disk shows up here, so the status is checked.
-    check_status(w.file.close(), w.path, "cannot close the HDF5 file");
-  }
-  w.finished = true;
+  // Closing writes the metadata: a full disk may show up here (the file is then removed).
+  w.file->finish();
   // The snapshot is complete on disk, so it is listed even if the XDMF rewrite below fails:
   // the next successful rewrite then includes it.
   w.writer->entries_.push_back({w.relative, w.time, w.step, w.n});

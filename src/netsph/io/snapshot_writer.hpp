@@ -2,7 +2,8 @@
 // Particle snapshots for ParaView: one HDF5 file per snapshot under <dir>/snapshots/ and one
 // XDMF 3 file, <dir>/<base>.xdmf, listing every snapshot written so far as a temporal
 // collection. One file per snapshot means a run that dies mid-write loses at most the
-// snapshot being written; the XDMF file is replaced atomically after each snapshot.
+// snapshot being written; the XDMF file is replaced atomically after each snapshot. Every
+// dataset carries Fletcher-32 checksums (io/hdf5_layout.hpp), which readers verify.
 // Explicit Polyvertex connectivity is written because ParaView 5.11's Xdmf3 readers build no
 // cells from an implicit one (shared/notes/debian-stack.md, section 2c).
 #include <cstdint>

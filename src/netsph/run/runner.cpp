@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -20,6 +21,7 @@ namespace netsph {
 namespace {
 
 std::atomic<bool> g_stop{false};
+std::atomic<int> g_stop_signal{0};  // the signal that asked, 0 when none did
 
 /// For a net whose sinker bar gave some of its reaction at the bar (no water downstream of a
 /// share: solver/net_coupling.hpp), what a user should know; empty otherwise.
@@ -174,11 +176,25 @@ nlohmann::json summary_json(const Simulation& sim, const GlobalMeasures& g, cons
 
 }  // namespace
 
-void request_stop() {
+void request_stop(int signal) {
+  if (signal != 0) g_stop_signal.store(signal);
   g_stop.store(true);
 }
 bool stop_requested() {
   return g_stop.load();
+}
+
+std::string stop_cause() {
+  switch (g_stop_signal.load()) {
+    case SIGINT:
+      return "Ctrl-C (SIGINT)";
+    case SIGTERM:
+      return "SIGTERM (the end of the job, or kill)";
+    case SIGHUP:
+      return "SIGHUP (its terminal or ssh session closed)";
+    default:
+      return "a stop request";  // another process's signal, in a distributed run
+  }
 }
 
 CheckpointData case_record(const std::string& toml, const std::string& source,
@@ -267,7 +283,7 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
       }
       if (stepper.any(stop_requested())) {
         r.status = "interrupted";
-        r.message = fmt::format("stopped by the user at t = {:.6g} s (step {})", stepper.time(),
+        r.message = fmt::format("stopped by {} at t = {:.6g} s (step {})", stop_cause(), stepper.time(),
                                 stepper.steps());
         break;
       }

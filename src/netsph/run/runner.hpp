@@ -67,8 +67,11 @@ inline bool run_has_ended(double t, double end_time) {
   return !(t < end_time * (1 - 1e-12));
 }
 
-/// Async-signal-safe: asks a running simulation to stop after the current step.
-void request_stop();
+/// Async-signal-safe: asks a running simulation to stop after the current step; `signal`, the
+/// signal that asked (0: none), is named in the run's message.
+void request_stop(int signal = 0);
 bool stop_requested();
+/// What asked the run to stop, for its message: "SIGHUP (its terminal or ssh session closed)".
+std::string stop_cause();
 
 }  // namespace netsph

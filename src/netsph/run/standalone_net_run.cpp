@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 
@@ -17,6 +18,7 @@
 #include "netsph/net/net_generator.hpp"
 #include "netsph/run/net_output.hpp"
 #include "netsph/run/output_schedule.hpp"
+#include "netsph/run/runner.hpp"
 
 namespace netsph {
 namespace {
@@ -190,12 +192,13 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     }
     if (stop) {
       report.status = "interrupted";
-      report.message = fmt::format("stopped by the user at t = {:.6g} s", t);
+      report.message = fmt::format("stopped by {} at t = {:.6g} s", stop_cause(), t);
       break;
     }
     const int percent = static_cast<int>(100 * t / end_time);
     if (options.progress && percent / 10 != last_percent / 10) {
-      fmt::print("t = {:.3f} / {:.3f} s ({}%)\n", t, end_time, percent);
+      // fputs, which a closed stdout (netsph run ... | head) fails quietly; fmt::print throws.
+      std::fputs(fmt::format("t = {:.3f} / {:.3f} s ({}%)\n", t, end_time, percent).c_str(), stdout);
       last_percent = percent;
     }
   }

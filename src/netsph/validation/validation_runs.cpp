@@ -61,6 +61,8 @@ bool unfinished_run(const std::filesystem::path& dir, const CheckpointData& reco
   }
   try {
     checkpoint = read_checkpoint_file(checkpoint_path(dir));
+    if (!checkpoint.unchecked.empty())
+      spdlog::warn("validate: {}: {}", checkpoint_path(dir).string(), checkpoint.unchecked);
   } catch (const Error& e) {
     spdlog::warn("validate: {} cannot be continued ({}); running it again", dir.string(), e.what());
     return false;
