@@ -205,7 +205,7 @@ TEST(StandaloneNet, WavesTableOfAStandaloneCaseTakesItsWaterFromItsKeys) {
         {"waves={height=0.1, period=2.0, depth=2.0, still_water_level=0.0, wavemaker=\"p\"}"});
     FAIL() << "a wavemaker was accepted in a standalone case";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("has no paddle"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("has no wavemaker"), std::string::npos) << e.what();
   }
 }
 
