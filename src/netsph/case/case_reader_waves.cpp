@@ -551,38 +551,33 @@ void CaseReader::check_damping_clear_of_paddle(const TomlTableReader& r,
                                                const DampingSpec& zone) const {
   const WaveSpec& w = spec_.waves;
   if (!w.given) return;
-  // Where the zone damps: s = (x - from) / (to - from) > 0. At the paddle's face (or within
-  // its travel) it would damp the wave where it is made.
-  if (w.relaxation) {
-    // The relaxation zone forces fully from x_full back to the water's end: a damping zone
-    // reaching any of it would fight the wave where it is made.
-    for (const double x : {w.relaxation_full, w.relaxation_end}) {
-      if ((x - zone.from) / (zone.to - zone.from) <= 0) continue;
-      r.fail_value(
-          "to", *r.find("to"),
-          fmt::format("the zone damps from x = {} m towards x = {} m and on beyond it, which "
-                      "takes in the relaxation zone that makes the waves (x from {} to {} m, "
-                      "[waves] relaxation_zone): it would damp the wave where it is made. The "
-                      "zone must grow away from it (to {} from for waves travelling in {}x) and "
-                      "start past x = {} m",
-                      format_number(zone.from), format_number(zone.to),
-                      format_number(w.relaxation_full), format_number(w.relaxation_end),
-                      w.direction > 0 ? ">" : "<", w.direction > 0 ? "+" : "-",
-                      format_number(w.relaxation_end)));
-    }
-    return;
-  }
+  // Where the zone damps: s = (x - from) / (to - from) > 0. It must not reach where the wave
+  // is made: the paddle's face over its travel, or the relaxation zone (forced fully from
+  // x_full back to the water's end).
   const double e = w.max_excursion;
-  for (const double x : {w.paddle_x - e, w.paddle_x + e}) {
+  const std::array<double, 2> made =
+      w.relaxation ? std::array{w.relaxation_full, w.relaxation_end}
+                   : std::array{w.paddle_x - e, w.paddle_x + e};
+  for (const double x : made) {
     if ((x - zone.from) / (zone.to - zone.from) <= 0) continue;
-    r.fail_value(
-        "to", *r.find("to"),
-        fmt::format("the zone damps from x = {} m towards x = {} m and on beyond it, which takes "
-                    "in the paddle at x = {} m: it would damp the wave where it is made. The zone "
-                    "must grow away from the paddle (to {} from for waves travelling in {}x) and "
-                    "start in front of it",
-                    format_number(zone.from), format_number(zone.to), format_number(w.paddle_x),
-                    w.direction > 0 ? ">" : "<", w.direction > 0 ? "+" : "-"));
+    const std::string maker =
+        w.relaxation
+            ? fmt::format("the relaxation zone that makes the waves (x from {} to {} m, [waves] "
+                          "relaxation_zone)",
+                          format_number(w.relaxation_full), format_number(w.relaxation_end))
+            : fmt::format("the paddle at x = {} m", format_number(w.paddle_x));
+    const std::string start = w.relaxation
+                                  ? fmt::format("start past x = {} m",
+                                                format_number(w.relaxation_end))
+                                  : std::string("start in front of it");
+    r.fail_value("to", *r.find("to"),
+                 fmt::format("the zone damps from x = {} m towards x = {} m and on beyond it, "
+                             "which takes in {}: it would damp the wave where it is made. The "
+                             "zone must grow away from {} (to {} from for waves travelling in "
+                             "{}x) and {}",
+                             format_number(zone.from), format_number(zone.to), maker,
+                             w.relaxation ? "it" : "the paddle", w.direction > 0 ? ">" : "<",
+                             w.direction > 0 ? "+" : "-", start));
   }
 }
 
