@@ -1,8 +1,8 @@
-// The [waves], [[damping]] and [[gauge]] tables: the wave a piston paddle makes (the reader
-// sets the paddle wall's motion from it), the zones that absorb waves, and the gauges that
-// measure them. Same conventions as case_reader.cpp; docs/case-reference.md documents every
-// key. The checks here need only the case; those that need the scene (the first time step, the
-// particles per wave height) are setup/scene_waves.cpp's.
+// The [waves] table: the wave a piston paddle makes (the reader sets the paddle wall's motion
+// from it); the zones that absorb waves and the gauges that measure them are
+// case_reader_damping_gauges.cpp's. Same conventions as case_reader.cpp; docs/case-reference.md
+// documents every key. The checks here need only the case; those that need the scene (the first
+// time step, the particles per wave height) are setup/scene_waves.cpp's.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,20 +28,6 @@ constexpr double kMaxStokesRatio = 0.25;
 /// The paddle's velocity table: at most this many samples (32 B each), and this many
 /// sample-components of work to fill it (a few seconds).
 constexpr double kMaxPaddleSamples = 5e6, kMaxPaddleWork = 5e9;
-
-/// The highest top (surface_z, else the box top) and the lowest bottom of the fills.
-struct FillLevels {
-  double top = -std::numeric_limits<double>::infinity();
-  double bottom = std::numeric_limits<double>::infinity();
-};
-FillLevels fill_levels(const CaseSpec& spec) {
-  FillLevels l;
-  for (const FillSpec& f : spec.fills) {
-    l.top = std::max(l.top, f.surface_z.value_or(f.box.max.z));
-    l.bottom = std::min(l.bottom, f.box.min.z);
-  }
-  return l;
-}
 
 }  // namespace
 
@@ -109,8 +95,8 @@ std::string CaseReader::wave_current_source() const {
   if (w.relaxation && !spec_.inlets.empty()) {
     const OpenBoundarySpec& in = spec_.inlets.front();
     return fmt::format("inlet '{}' ({}) velocity = {} m/s on its {} face: {}", in.name,
-                       in.where.str(), format_number(in.velocity.value_or(0.0)),
-                       name_of(in.face), along);
+                       in.where.str(), format_number(in.velocity.value_or(0.0)), name_of(in.face),
+                       along);
   }
   return fmt::format("[current] velocity x = {} m/s: {}", format_number(w.direction * w.current),
                      along);
@@ -270,8 +256,7 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
   const double g = -spec_.fluid.gravity.z;
   const std::string_view kind = name_of(w.kind);
-  const std::vector<std::string_view> regular_keys = {"height", "period", "theory",
-                                                      "generation"};
+  const std::vector<std::string_view> regular_keys = {"height", "period", "theory", "generation"};
   const std::vector<std::string_view> jonswap_keys = {"hs", "tp", "gamma", "seed", "components"};
   for (const auto& [owner, keys] :
        {std::pair{WaveKind::Regular, regular_keys}, std::pair{WaveKind::Jonswap, jonswap_keys}}) {
@@ -341,8 +326,7 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
                     "L = 0.142 tanh(kh) = {:.4g} (Miche 1944); the highest that does "
                     "not break is {:.4g} m",
                     height / wavelength, wavelength, format_number(period), format_number(w.depth),
-                    w.current == 0 ? std::string()
-                                   : fmt::format(", on {}", wave_current_source()),
+                    w.current == 0 ? std::string() : fmt::format(", on {}", wave_current_source()),
                     limit, limit * wavelength));
   }
   // Stokes' expansion holds while its second-order surface stays small beside the first
@@ -395,16 +379,16 @@ void CaseReader::read_generation(const TomlTableReader& r) {
     }
     return;
   }
-  const PaddleGeneration fallback = w.theory == WaveTheory::Stokes2
-                                        ? PaddleGeneration::SecondOrder
-                                        : PaddleGeneration::FirstOrder;
+  const PaddleGeneration fallback = w.theory == WaveTheory::Stokes2 ? PaddleGeneration::SecondOrder
+                                                                    : PaddleGeneration::FirstOrder;
   w.generation = r.choice("generation", kPaddleGenerationNames, fallback);
   const toml::node* node = r.find("generation");
   if (!node || w.generation != PaddleGeneration::SecondOrder) return;
   if (w.theory != WaveTheory::Stokes2) {
-    r.fail_value("generation", *node,
-                 "second-order generation makes the Stokes second-order wave, and theory = \"linear\" "
-                 "asks for a linear one: set theory = \"stokes2\" or generation = \"first_order\"");
+    r.fail_value(
+        "generation", *node,
+        "second-order generation makes the Stokes second-order wave, and theory = \"linear\" "
+        "asks for a linear one: set theory = \"stokes2\" or generation = \"first_order\"");
   }
   if (w.paddle != PaddleType::Piston) {
     r.fail_value("generation", *node, "second-order generation is built for a piston paddle only");
@@ -494,221 +478,6 @@ void CaseReader::check_free_surface(const TomlTableReader& r) const {
           "face or raise it",
           wall.name, wall.where.str(), format_number(wall.box.max.z),
           format_number(w.still_level)));
-    }
-  }
-}
-
-// ---- [[damping]] ---------------------------------------------------------------------------
-
-void CaseReader::read_damping() {
-  const std::vector<const toml::table*> tables = find_array_of_tables("damping");
-  for (std::size_t i = 0; i < tables.size(); ++i) {
-    const int number = static_cast<int>(i) + 1;
-    const std::string label = fmt::format("damping[{}]", number);
-    TomlTableReader r(*tables[i], label, label, keys_of("damping"), source_, home_hint);
-    DampingSpec z;
-    z.where = r.location();
-    if (spec_.fills.empty())
-      r.fail_table("a damping zone acts on the SPH fluid, and this case has none");
-    z.name = r.string("name", fmt::format("damping{}", number));
-    z.from = r.required_number("from", NumberRule::any("m"), "x where the damping starts, m");
-    z.to = r.required_number("to", NumberRule::any("m"),
-                             "x where the damping reaches its full rate (and beyond), m");
-    if (z.to == z.from) {
-      r.fail_value("to", *r.find("to"),
-                   "must differ from `from`: the damping grows from `from` to `to` (to > from "
-                   "for waves travelling in +x)");
-    }
-    check_x_in_domain(r, "from", z.from);
-    check_x_in_domain(r, "to", z.to);
-    for (const DampingSpec& other : spec_.damping) {
-      if (other.name != z.name) continue;
-      const toml::node* name = r.find("name");
-      const std::string message =
-          fmt::format("damping zone name \"{}\" is used twice: by {} and {}; names must be unique",
-                      z.name, other.where.str(), label);
-      if (name) r.fail_value("name", *name, message);
-      r.fail_table(message);
-    }
-    z.velocity = read_in_plane_vector(r, "velocity", NumberRule::any("m/s"), {});
-    const double length = std::fabs(z.to - z.from);
-    if (const auto rate = r.optional_number("rate", NumberRule::positive("1/s"))) {
-      z.rate = *rate;
-    } else if (spec_.waves.given) {
-      z.rate = default_damping_rate(spec_.waves, length, -spec_.fluid.gravity.z);
-    } else {
-      r.fail_table(
-          fmt::format("{} needs its rate (1/s): without [waves] there is no wave to "
-                      "derive it from",
-                      label));
-    }
-    check_damping_clear_of_paddle(r, z);
-    spec_.damping.push_back(z);
-  }
-}
-
-void CaseReader::check_damping_clear_of_paddle(const TomlTableReader& r,
-                                               const DampingSpec& zone) const {
-  const WaveSpec& w = spec_.waves;
-  if (!w.given) return;
-  // Where the zone damps: s = (x - from) / (to - from) > 0. It must not reach where the wave
-  // is made: the paddle's face over its travel, or the relaxation zone (forced fully from
-  // x_full back to the water's end).
-  const double e = w.max_excursion;
-  const std::array<double, 2> made =
-      w.relaxation ? std::array{w.relaxation_full, w.relaxation_end}
-                   : std::array{w.paddle_x - e, w.paddle_x + e};
-  for (const double x : made) {
-    if ((x - zone.from) / (zone.to - zone.from) <= 0) continue;
-    const std::string maker =
-        w.relaxation
-            ? fmt::format("the relaxation zone that makes the waves (x from {} to {} m, [waves] "
-                          "relaxation_zone)",
-                          format_number(w.relaxation_full), format_number(w.relaxation_end))
-            : fmt::format("the paddle at x = {} m", format_number(w.paddle_x));
-    const std::string start = w.relaxation
-                                  ? fmt::format("start past x = {} m",
-                                                format_number(w.relaxation_end))
-                                  : std::string("start in front of it");
-    r.fail_value("to", *r.find("to"),
-                 fmt::format("the zone damps from x = {} m towards x = {} m and on beyond it, "
-                             "which takes in {}: it would damp the wave where it is made. The "
-                             "zone must grow away from {} (to {} from for waves travelling in "
-                             "{}x) and {}",
-                             format_number(zone.from), format_number(zone.to), maker,
-                             w.relaxation ? "it" : "the paddle", w.direction > 0 ? ">" : "<",
-                             w.direction > 0 ? "+" : "-", start));
-  }
-}
-
-double default_damping_rate(const WaveSpec& w, double length, double g) {
-  // The zone relaxes the velocity at rate beta(x) = rate s^2 (s from 0 to 1 across it). A wave
-  // loses energy at rate beta (its kinetic half at 2 beta), so its amplitude decays as
-  // exp(-integral beta / (2 c_g) dx): over the zone and back, after reflection at its end,
-  // exp(-rate L / (3 c_g)). The rate that brings that round trip to 1%: 3 c_g ln(100) / L.
-  const double cg = w.train.front_speed > 0 ? w.train.front_speed : std::sqrt(g * w.depth);
-  return 3 * cg * std::log(100.0) / length;
-}
-
-// ---- [[gauge]] -----------------------------------------------------------------------------
-
-void CaseReader::read_gauges() {
-  const std::vector<const toml::table*> tables = find_array_of_tables("gauge");
-  const FillLevels fills = fill_levels(spec_);
-  for (std::size_t i = 0; i < tables.size(); ++i) {
-    const int number = static_cast<int>(i) + 1;
-    const std::string label = fmt::format("gauge[{}]", number);
-    TomlTableReader r(*tables[i], label, label, keys_of("gauge"), source_, home_hint);
-    GaugeSpec gauge;
-    gauge.where = r.location();
-    if (spec_.fills.empty())
-      r.fail_table("a wave gauge measures the SPH fluid, and this case has none");
-    gauge.name = r.string("name", fmt::format("gauge{}", number));
-    if (!plain_file_name(gauge.name)) {
-      r.fail_value("name", *r.find("name"),
-                   "must be a plain name: letters, digits, '_', '-' and '.' (it heads a column "
-                   "of gauges.csv)");
-    }
-    // gauges.csv's columns: time, then <name> and <name>_target per gauge.
-    if (const toml::node* name = r.find("name");
-        name && (gauge.name == "time" || gauge.name.ends_with("_target"))) {
-      r.fail_value("name", *name,
-                   "is a name gauges.csv gives its own columns (\"time\", \"<gauge>_target\"); "
-                   "choose another");
-    }
-    for (const GaugeSpec& other : spec_.gauges) {
-      if (other.name != gauge.name) continue;
-      const std::string message = fmt::format(
-          "gauge name \"{}\" is used twice: by {} and {}{}; gauge names must be "
-          "unique (each heads a column of gauges.csv)",
-          gauge.name, other.where.str(), label, r.has("name") ? "" : " (its default)");
-      if (const toml::node* name = r.find("name")) r.fail_value("name", *name, message);
-      r.fail_table(message);
-    }
-    gauge.x = r.required_number("x", NumberRule::any("m"), "the gauge's x, m");
-    if (is_2d()) {
-      if (const toml::node* y = r.find("y"))
-        r.fail_value("y", *y, fmt::format("is not allowed {}", kNotIn2D));
-    } else {
-      gauge.y = r.required_number("y", NumberRule::any("m"), "the gauge's y, m");
-    }
-    check_gauge_position(r, gauge);
-    gauge.z_min = fills.bottom;
-    const double above =
-        spec_.waves.given ? 2 * spec_.waves.reference_height() : 0.5 * (fills.top - fills.bottom);
-    gauge.z_max = spec_.domain.given ? spec_.domain.max.z : fills.top + above;
-    spec_.gauges.push_back(gauge);
-  }
-}
-
-void CaseReader::check_gauge_position(const TomlTableReader& r, const GaugeSpec& gauge) const {
-  const Vec3d at{gauge.x, gauge.y, 0};
-  const std::array<std::string_view, 2> keys = {"x", "y"};
-  const DomainSpec& d = spec_.domain;
-  if (d.given) {
-    for (const int axis : {0, 1}) {
-      if (axis == 1 && is_2d()) continue;
-      if (at[axis] >= d.min[axis] && at[axis] <= d.max[axis]) continue;
-      const std::string_view k = keys[static_cast<std::size_t>(axis)];
-      r.fail_value(k, *r.find(k),
-                   fmt::format("lies outside [domain] ({} from {} to {} m)", k,
-                               format_number(d.min[axis]), format_number(d.max[axis])));
-    }
-  }
-  // In a wall, or so close to its face that the kernel (2h) reaches into it: the fluid volume
-  // sum there stays under one half at any height and the gauge would read nothing.
-  const double dp = spec_.simulation.dp;
-  const double support = 2 * spec_.simulation.h_over_dp * dp;
-  for (const WallSpec& w : spec_.walls) {
-    const bool paddle = spec_.waves.has_paddle() && &w == &spec_.walls[spec_.waves.wall];
-    const double travel = paddle ? spec_.waves.max_excursion : 0.0;
-    for (const int axis : {0, 1}) {
-      if (axis == 1 && is_2d()) continue;
-      const int other = 1 - axis;
-      const bool across =
-          is_2d() || (at[other] >= w.box.min[other] && at[other] <= w.box.max[other]);
-      if (!across) continue;
-      const double thick = w.layers * dp;
-      const std::string_view k = keys[static_cast<std::size_t>(axis)];
-      for (const int side : {0, 1}) {
-        if (!w.faces[static_cast<std::size_t>(2 * axis + side)]) continue;
-        const double face = side == 0 ? w.box.min[axis] : w.box.max[axis];
-        const double out = side == 0 ? face - at[axis] : at[axis] - face;  // > 0: in the layers
-        if (out > 0 && out < thick) {
-          r.fail_value(
-              k, *r.find(k),
-              fmt::format("lies in wall '{}' ({}): its particle layers span {} from {:.4g} "
-                          "to {:.4g} m; put the gauge in the water",
-                          w.name, w.where.str(), k, side == 0 ? face - thick : face,
-                          side == 0 ? face : face + thick));
-        }
-        if (out <= 0 && -out < support + travel) {
-          r.fail_value(k, *r.find(k),
-                       fmt::format("is {:.4g} m from the face of wall '{}' ({}) at {} = {} m{}: "
-                                   "closer than {:.4g} m ({}the kernel's reach 2h), the fluid "
-                                   "volume sum stays under one half and the gauge reads nothing; "
-                                   "move it into the water",
-                                   -out, w.name, w.where.str(), k, format_number(face),
-                                   paddle ? " (the paddle)" : "", support + travel,
-                                   paddle ? "the paddle's travel plus " : ""));
-        }
-      }
-    }
-  }
-  // Over water: x within a fill first, then (3D) x and y within the same one.
-  for (const int axis : {0, 1}) {
-    if (axis == 1 && is_2d()) continue;
-    bool over_water = false;
-    for (const FillSpec& f : spec_.fills) {
-      bool inside = at.x >= f.box.min.x && at.x <= f.box.max.x;
-      if (axis == 1) inside = inside && at.y >= f.box.min.y && at.y <= f.box.max.y;
-      over_water = over_water || inside;
-    }
-    if (!over_water) {
-      const std::string_view k = keys[static_cast<std::size_t>(axis)];
-      r.fail_value(k, *r.find(k),
-                   "lies over no [[fill]]: a gauge measures the water below it, and there is "
-                   "none there");
     }
   }
 }
