@@ -98,8 +98,7 @@ TEST(WavesCase, StokesWaveIsGeneratedToSecondOrderByDefault) {
   EXPECT_EQ(linear.waves.generation, PaddleGeneration::FirstOrder);
   const CaseSpec stokes = flume({"waves.theory=\"stokes2\""});
   EXPECT_EQ(stokes.waves.generation, PaddleGeneration::SecondOrder);
-  const CaseSpec forced =
-      flume({"waves.theory=\"stokes2\"", "waves.generation=\"first_order\""});
+  const CaseSpec forced = flume({"waves.theory=\"stokes2\"", "waves.generation=\"first_order\""});
   EXPECT_EQ(forced.waves.generation, PaddleGeneration::FirstOrder);
   const WaveSpec& w = stokes.waves;
   const RegularWave& c = w.train.components.front();
@@ -113,8 +112,8 @@ TEST(WavesCase, StokesWaveIsGeneratedToSecondOrderByDefault) {
     // period apart (T / 100 first order, T / 200 second): the error is at most (2 pi / 100)^2
     // / 8 of a harmonic's velocity amplitude.
     const double tolerance = std::pow(2 * M_PI / 100, 2) / 8 *
-                             (std::fabs(2 * c.omega * a2) + c.omega * 0.5 *
-                              c.height / piston_height_to_stroke(c.k * c.depth));
+                             (std::fabs(2 * c.omega * a2) +
+                              c.omega * 0.5 * c.height / piston_height_to_stroke(c.k * c.depth));
     EXPECT_NEAR(second.at(t).x - first.at(t).x, expected, tolerance) << "t = " << t;
   }
 }
@@ -264,8 +263,8 @@ TEST(WaveGauge, SurfaceIsWhereTheCoverageCrossesOneHalf) {
 // lattice's surface, which lies within dp/2 of the fill's top (its top row sits dp/2 below it,
 // and the kernel sum crosses 1/2 within a spacing of that row).
 TEST(WaveGauge, WithoutWavesStillWaterReadsNearZero) {
-  const CaseSpec spec = read_case_file(std::string(NETSPH_CASES_DIR) + "/hydrostatic2d.toml",
-                                       {"gauge=[{x=0.5}]"});
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_CASES_DIR) + "/hydrostatic2d.toml", {"gauge=[{x=0.5}]"});
   ASSERT_FALSE(spec.waves.given);
   Simulation sim(spec);
   sim.step();  // the samples read the step's neighbour grid, as a run's do

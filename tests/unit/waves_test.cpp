@@ -375,9 +375,9 @@ TEST(SecondOrderGeneration, MadsenCorrectionIsTheShallowWaterFluxBalance) {
   for (double kh : {0.02, 0.05, 0.1, 0.2}) {
     const double k = kh / h, m1 = piston_height_to_stroke(kh);
     const double a2 = piston_second_order_amplitude(height, kh, h);
-    const double flux = height * height / (32 * h) *
-                        (std::cosh(kh) * (2 + std::cosh(2 * kh)) / std::pow(std::sinh(kh), 3) -
-                         4 / m1);
+    const double flux =
+        height * height / (32 * h) *
+        (std::cosh(kh) * (2 + std::cosh(2 * kh)) / std::pow(std::sinh(kh), 3) - 4 / m1);
     EXPECT_NEAR(a2, flux, 0.3 * std::pow(kh, 4) * a2) << "kh " << kh;
     const double shallow = 3 * height * height / (32 * std::pow(k, 3) * std::pow(h, 4));
     EXPECT_NEAR(a2, shallow, 0.7 * kh * kh * shallow) << "kh " << kh;
@@ -418,8 +418,8 @@ TEST(SecondOrderGeneration, PaddleMotionGetsTheSecondHarmonic) {
   EXPECT_THROW(regular_paddle_motion(PaddleType::Flap, w, 2.0, PaddleGeneration::SecondOrder),
                Error);
   const WaveTrain regular = regular_wave_train(w.height, 2 * M_PI / w.omega, w.depth, 2, 2.0, g);
-  const PaddleMotion m = train_paddle_motion(PaddleType::Piston, regular,
-                                             PaddleGeneration::SecondOrder);
+  const PaddleMotion m =
+      train_paddle_motion(PaddleType::Piston, regular, PaddleGeneration::SecondOrder);
   ASSERT_EQ(m.harmonics.size(), 2u);
   EXPECT_NEAR(paddle_sample_interval(m),
               0.5 * paddle_sample_interval(train_paddle_motion(PaddleType::Piston, regular)),

@@ -515,8 +515,7 @@ void CaseReader::check_in_domain(const TomlTableReader& r, std::string_view key,
   }
 }
 
-void CaseReader::check_x_in_domain(const TomlTableReader& r, std::string_view key,
-                                   double x) const {
+void CaseReader::check_x_in_domain(const TomlTableReader& r, std::string_view key, double x) const {
   // The other coordinates at the domain's middle: only x is the key's.
   Vec3d p = 0.5 * (spec_.domain.min + spec_.domain.max);
   p.x = x;

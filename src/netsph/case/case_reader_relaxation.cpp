@@ -91,17 +91,18 @@ void CaseReader::read_relaxation_wavemaker(const TomlTableReader& r) {
   w.still_level = water->surface_z.value_or(water->box.max.z);
   w.depth = w.still_level - water->box.min.z;
   if (!(w.depth > 0)) {
-    r.fail_table(fmt::format("the water of the relaxation zone ({}) has no depth: its surface, "
-                             "z = {} m, is not above its bottom, z = {} m",
-                             water->where.str(), format_number(w.still_level),
-                             format_number(water->box.min.z)));
+    r.fail_table(fmt::format(
+        "the water of the relaxation zone ({}) has no depth: its surface, "
+        "z = {} m, is not above its bottom, z = {} m",
+        water->where.str(), format_number(w.still_level), format_number(water->box.min.z)));
   }
 
   // The current: an inlet's uniform inflow along x (none: still water).
   if (spec_.inlets.size() > 1) {
-    r.fail_table(fmt::format("a relaxation zone takes its current from one [[inlet]], and this "
-                             "case has {}: keep one, on an x face",
-                             spec_.inlets.size()));
+    r.fail_table(
+        fmt::format("a relaxation zone takes its current from one [[inlet]], and this "
+                    "case has {}: keep one, on an x face",
+                    spec_.inlets.size()));
   }
   if (spec_.inlets.empty()) {
     for (const OpenBoundarySpec& out : spec_.outlets) {
@@ -117,14 +118,16 @@ void CaseReader::read_relaxation_wavemaker(const TomlTableReader& r) {
   if (!spec_.inlets.empty()) {
     const OpenBoundarySpec& in = spec_.inlets.front();
     if (in.face != kXMin && in.face != kXMax) {
-      r.fail_table(fmt::format("the waves travel along x, and inlet '{}' ({}) is on the {} "
-                               "face: put the inlet on the xmin or xmax face",
-                               in.name, in.where.str(), name_of(in.face)));
+      r.fail_table(
+          fmt::format("the waves travel along x, and inlet '{}' ({}) is on the {} "
+                      "face: put the inlet on the xmin or xmax face",
+                      in.name, in.where.str(), name_of(in.face)));
     }
     if (!in.profile_z.empty()) {
-      r.fail_table(fmt::format("inlet '{}' ({}) has a velocity profile, and the waves are set "
-                               "up on a uniform current: give the inlet a uniform velocity",
-                               in.name, in.where.str()));
+      r.fail_table(
+          fmt::format("inlet '{}' ({}) has a velocity profile, and the waves are set "
+                      "up on a uniform current: give the inlet a uniform velocity",
+                      in.name, in.where.str()));
     }
     u = (in.face == kXMin ? 1.0 : -1.0) * in.velocity.value_or(0.0);
   }

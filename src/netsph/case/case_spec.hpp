@@ -305,12 +305,12 @@ static_assert(one_to_one(kWaveAbsorptionNames));
 /// set up by the reader from the wave and the paddle's travel.
 struct WaveAbsorptionSpec {
   bool active = false;
-  double gauge_x = 0;      ///< m: where the elevation is measured, in front of the paddle
-  double gauge_y = 0;      ///< m: the middle of the water's width there
-  double gain = 0;         ///< 1/s
-  double delay = 0;        ///< s
-  double drift_time = 0;   ///< s
-  double mean_time = 0;    ///< s: the running mean taken from the measured elevation
+  double gauge_x = 0;     ///< m: where the elevation is measured, in front of the paddle
+  double gauge_y = 0;     ///< m: the middle of the water's width there
+  double gain = 0;        ///< 1/s
+  double delay = 0;       ///< s
+  double drift_time = 0;  ///< s
+  double mean_time = 0;   ///< s: the running mean taken from the measured elevation
 };
 
 struct WaveSpec {
@@ -325,15 +325,15 @@ struct WaveSpec {
   /// regular, flume: the paddle's motion, first order or with the second harmonic that
   /// suppresses the free one (default: second order for a Stokes-2 wave, else first)
   PaddleGeneration generation = PaddleGeneration::FirstOrder;
-  JonswapSpec jonswap;       ///< jonswap: hs, tp, gamma
-  std::uint64_t seed = 1;    ///< jonswap: the random phases' seed
-  int components = 0;        ///< jonswap: how many frequencies
-  double depth = 0;          ///< still-water depth h, m (default: still level - lowest fill)
-  double still_level = 0;    ///< z of the still-water level, m (default: the highest fill top)
-  double ramp = 0;           ///< s (default: two periods)
+  JonswapSpec jonswap;     ///< jonswap: hs, tp, gamma
+  std::uint64_t seed = 1;  ///< jonswap: the random phases' seed
+  int components = 0;      ///< jonswap: how many frequencies
+  double depth = 0;        ///< still-water depth h, m (default: still level - lowest fill)
+  double still_level = 0;  ///< z of the still-water level, m (default: the highest fill top)
+  double ramp = 0;         ///< s (default: two periods)
   /// x of the paddle's face at rest (standalone: origin_x; relaxation: relaxation_end), m
   double paddle_x = 0;
-  bool standalone = false;   ///< a standalone net case's waves: no paddle
+  bool standalone = false;  ///< a standalone net case's waves: no paddle
   /// A relaxation wavemaker instead of a paddle: the fluid's velocity is relaxed towards the
   /// wave's (plus the current's) over x from relaxation_full (fully) to relaxation_end (not at
   /// all), where the waves leave it; relaxation_end is then paddle_x, the waves' origin.
@@ -342,9 +342,9 @@ struct WaveSpec {
   double relaxation_rate = 0;                      ///< 1/s, at relaxation_full
   /// standalone, relaxation: the current along the waves' direction they ride on, m/s
   double current = 0;
-  int direction = 1;         ///< +1: the waves travel in +x; -1: in -x
-  WaveTrain train;           ///< the components, set up (derived)
-  double max_excursion = 0;  ///< the paddle's largest excursion from rest over the run, m
+  int direction = 1;              ///< +1: the waves travel in +x; -1: in -x
+  WaveTrain train;                ///< the components, set up (derived)
+  double max_excursion = 0;       ///< the paddle's largest excursion from rest over the run, m
   WaveAbsorptionSpec absorption;  ///< the paddle's active absorption (none by default)
   SourceLocation where;
 

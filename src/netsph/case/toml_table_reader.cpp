@@ -391,10 +391,9 @@ std::vector<double> TomlTableReader::to_number_array(std::string_view key, const
                                                      std::size_t min_size) const {
   const auto* array = node.as_array();
   if (!array) {
-    fail_value(
-        key, node,
-        fmt::format("must be an array of numbers (each {}), not {}", rule.describe(),
-                    type_name(node)));
+    fail_value(key, node,
+               fmt::format("must be an array of numbers (each {}), not {}", rule.describe(),
+                           type_name(node)));
   }
   if (array->size() < min_size) {
     fail_value(key, node,

@@ -15,9 +15,8 @@ namespace netsph {
 void Simulation::setup_absorber() {
   const WaveSpec& w = spec_.waves;
   if (!w.given || !w.absorption.active) return;
-  absorber_ = std::make_unique<PaddleAbsorber>(
-      AbsorberSettings{w.absorption.gain, w.absorption.delay, w.absorption.drift_time,
-                       w.absorption.mean_time});
+  absorber_ = std::make_unique<PaddleAbsorber>(AbsorberSettings{
+      w.absorption.gain, w.absorption.delay, w.absorption.drift_time, w.absorption.mean_time});
   // From the bed to two wave heights above the still water, every quarter spacing (the
   // gauges' sampling: the surface interpolated between samples to a fraction of that).
   const double dz = spec_.simulation.dp / 4;

@@ -27,11 +27,11 @@ namespace netsph {
 /// The wave a relaxation wavemaker's zone drives the fluid into, in the wave's own frame:
 /// x' = direction (x - origin_x) along its travel, z' = z - still_level.
 struct ZoneWave {
-  RegularWave wave{};     ///< height 0: no wave (a plain damping zone)
-  double origin_x = 0;    ///< m: where the wave's phase is wave.phase at t = 0
-  double still_level = 0; ///< m: z of the still-water surface
-  double ramp = 0;        ///< s: the wave's ramp from rest (wave_ramp)
-  int direction = 1;      ///< +1: the wave travels in +x; -1: in -x
+  RegularWave wave{};      ///< height 0: no wave (a plain damping zone)
+  double origin_x = 0;     ///< m: where the wave's phase is wave.phase at t = 0
+  double still_level = 0;  ///< m: z of the still-water surface
+  double ramp = 0;         ///< s: the wave's ramp from rest (wave_ramp)
+  int direction = 1;       ///< +1: the wave travels in +x; -1: in -x
 };
 
 struct DampingZone {

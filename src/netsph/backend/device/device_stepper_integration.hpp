@@ -89,8 +89,7 @@ void DeviceStepper<Exec>::damp(double dt) {
   const double t = time_ + dt;  // the step's end: the velocities are the corrected ones
   Exec::for_each(n_, [=] NETSPH_LAMBDA(std::uint32_t i) {
     if (st.kind[i] != ParticleKind::Fluid) return;
-    for (std::uint32_t z = 0; z < count; ++z)
-      damp_velocity(zones[z], st.pos[i], t, dt, st.vel[i]);
+    for (std::uint32_t z = 0; z < count; ++z) damp_velocity(zones[z], st.pos[i], t, dt, st.vel[i]);
   });
 }
 
