@@ -234,8 +234,8 @@ TEST(CheckpointChecksum, AFlippedByteAnywhereIsRefusedOrHarmless) {
     put_bytes(copy, bytes);
     read_and_tally(copy, expected, expected_rows, "", "byte " + std::to_string(at), t);
   }
-  std::printf("flips anywhere: %d tried, %d refused, %d read back identical, %d changed\n",
-              t.tried, t.refused, t.identical, t.changed);
+  std::printf("flips anywhere: %d tried, %d refused, %d read back identical, %d changed\n", t.tried,
+              t.refused, t.identical, t.changed);
   EXPECT_EQ(t.changed, 0) << "read back changed: " << t.changed_at.front();
   fs::remove(file);
   fs::remove(copy);

@@ -87,13 +87,13 @@ void write_checkpoint(const fs::path& file, std::size_t n,
 /// What a child reports through its exit status.
 enum Outcome : int {
   kAsExpected = 0,
-  kNoError = 10,        // the failed write did not throw netsph::Error
-  kOtherException = 11, // it threw something else
-  kBadMessage = 12,     // the message does not name the file
-  kOldChanged = 13,     // the previous file changed
-  kLeftovers = 14,      // a temporary or partial file was left
-  kOpenObjects = 15,    // HDF5 objects left open
-  kOpenFiles = 16,      // file descriptors left open (inside HDF5, where no call reaches them)
+  kNoError = 10,         // the failed write did not throw netsph::Error
+  kOtherException = 11,  // it threw something else
+  kBadMessage = 12,      // the message does not name the file
+  kOldChanged = 13,      // the previous file changed
+  kLeftovers = 14,       // a temporary or partial file was left
+  kOpenObjects = 15,     // HDF5 objects left open
+  kOpenFiles = 16,       // file descriptors left open (inside HDF5, where no call reaches them)
 };
 
 /// The number of file descriptors this process has open.
@@ -179,8 +179,8 @@ TEST(FullDisk, AFailedCheckpointWriteKeepsThePreviousOneAndExitsCleanly) {
   // Cuts at the start (creating the file), in the data and in the metadata at its end.
   for (const rlim_t limit : {rlim_t{0}, rlim_t{100}, rlim_t{3000}, rlim_t{70000}, size / 3,
                              size / 2, size - 70000, size - 5000, size - 600, size - 1}) {
-    const std::string where = "file size limit " + std::to_string(limit) + " of " +
-                              std::to_string(size);
+    const std::string where =
+        "file size limit " + std::to_string(limit) + " of " + std::to_string(size);
     EXPECT_EQ(in_child([&] { return failing_checkpoint_write(file, kRows); }, err, limit),
               kAsExpected)
         << where << ":\n"
@@ -228,12 +228,12 @@ TEST(FullDisk, ACheckpointOnAFullTmpfsKeepsThePreviousOneAndExitsCleanly) {
   SmallTmpfs tmpfs(disk, 2 * size + (1 << 20));
   if (!tmpfs.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
   write_checkpoint(file, 100);
-  for (const std::uintmax_t free_bytes : {std::uintmax_t{0}, std::uintmax_t{4096},
-                                          std::uintmax_t{65536}, size / 3, size / 2,
-                                          size - 65536, size - 8192}) {
+  for (const std::uintmax_t free_bytes :
+       {std::uintmax_t{0}, std::uintmax_t{4096}, std::uintmax_t{65536}, size / 3, size / 2,
+        size - 65536, size - 8192}) {
     leave_free(disk, free_bytes);
-    const std::string where = std::to_string(free_bytes) + " bytes free for " +
-                              std::to_string(size);
+    const std::string where =
+        std::to_string(free_bytes) + " bytes free for " + std::to_string(size);
     EXPECT_EQ(in_child([&] { return failing_checkpoint_write(file, kRows); }, err, std::nullopt),
               kAsExpected)
         << where << ":\n"
@@ -251,9 +251,10 @@ TEST(FullDisk, ADiskThatFillsBeforeTheMetadataIsWrittenKeepsThePreviousCheckpoin
   if (!tmpfs.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
   write_checkpoint(file, 100);
   std::string err;
-  EXPECT_EQ(in_child([&] { return failing_checkpoint_write(file, 1000, [&] { leave_free(disk, 0); }); },
-                     err, std::nullopt),
-            kAsExpected)
+  EXPECT_EQ(
+      in_child([&] { return failing_checkpoint_write(file, 1000, [&] { leave_free(disk, 0); }); },
+               err, std::nullopt),
+      kAsExpected)
       << err;
   expect_one_message(err, "disk filled after the data");
 }

@@ -449,9 +449,8 @@ TEST(SnapshotWriter, ADamagedSnapshotFailsToReadInsteadOfShowingOtherValues) {
     ASSERT_GE(file.id, 0);
     H5Closer dset{H5Dopen2(file.id, "density", H5P_DEFAULT), H5Dclose};
     std::vector<float> density_read(p.density.size());
-    EXPECT_LT(H5Dread(dset.id, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                      density_read.data()),
-              0)
+    EXPECT_LT(
+        H5Dread(dset.id, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, density_read.data()), 0)
         << "a damaged snapshot was read";
   }
   H5Eclear2(H5E_DEFAULT);

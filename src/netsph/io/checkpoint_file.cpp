@@ -31,10 +31,10 @@ class GroupWriter {
  public:
   GroupWriter(h5::OutputFile& file, const char* group, hid_t ftype, hid_t mtype)
       : file_(file), name_(group), ftype_(ftype), mtype_(mtype) {
-    group_ = file.keep(h5::Handle(
-        check_id(H5Gcreate2(file.get(), group, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), file.path(),
-                 std::string("cannot create group ") + group),
-        H5Gclose));
+    group_ = file.keep(
+        h5::Handle(check_id(H5Gcreate2(file.get(), group, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                            file.path(), std::string("cannot create group ") + group),
+                   H5Gclose));
   }
 
   /// Each array whole, in chunks of its own size (up to h5::kChunkElements).
@@ -95,8 +95,7 @@ class GroupWriter {
     check_status(
         H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &a.size, nullptr, &m, nullptr), path,
         what);
-    const h5::Handle memory_space(check_id(H5Screate_simple(1, &m, nullptr), path, what),
-                                  H5Sclose);
+    const h5::Handle memory_space(check_id(H5Screate_simple(1, &m, nullptr), path, what), H5Sclose);
     check_status(H5Dwrite(a.dataset, mtype_, memory_space.get(), file_space.get(), H5P_DEFAULT,
                           values.data()),
                  path, what);

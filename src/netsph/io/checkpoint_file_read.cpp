@@ -47,9 +47,8 @@ struct OpenCheckpoint {
   /// changed), and when it is not one-dimensional.
   h5::Handle dataset(const std::string& group, const std::string& name, hsize_t& size) const {
     const std::string what = damaged(group, name);
-    const h5::Handle g(check_id(H5Gopen2(file, group.c_str(), H5P_DEFAULT), path,
-                                damaged_group(group)),
-                       H5Gclose);
+    const h5::Handle g(
+        check_id(H5Gopen2(file, group.c_str(), H5P_DEFAULT), path, damaged_group(group)), H5Gclose);
     h5::Handle d(check_id(H5Dopen2(g.get(), name.c_str(), H5P_DEFAULT), path, what), H5Dclose);
     if (checksummed && !h5::has_checksum(d.get())) fail(path, what + " (it has no checksum)");
     const h5::Handle space(check_id(H5Dget_space(d.get()), path, what), H5Sclose);
@@ -74,10 +73,9 @@ std::vector<std::string> names_in(hid_t file, const char* group, const fs::path&
         H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
     if (len < 0) fail(path, damaged_group(group));
     std::string name(static_cast<std::size_t>(len), '\0');
-    check_status(static_cast<herr_t>(H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC,
-                                                        i, name.data(),
-                                                        static_cast<std::size_t>(len) + 1,
-                                                        H5P_DEFAULT)),
+    check_status(static_cast<herr_t>(
+                     H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(),
+                                        static_cast<std::size_t>(len) + 1, H5P_DEFAULT)),
                  path, damaged_group(group));
     names.push_back(std::move(name));
   }
@@ -85,8 +83,9 @@ std::vector<std::string> names_in(hid_t file, const char* group, const fs::path&
 }
 
 template <class T>
-void read_group(const OpenCheckpoint& c, const char* group, std::map<std::string, std::vector<T>>& m,
-                hid_t mtype, const std::vector<std::string>& skip = {}) {
+void read_group(const OpenCheckpoint& c, const char* group,
+                std::map<std::string, std::vector<T>>& m, hid_t mtype,
+                const std::vector<std::string>& skip = {}) {
   for (const std::string& name : names_in(c.file, group, c.path)) {
     if (std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
     hsize_t n = 0;
@@ -148,7 +147,8 @@ void read_kept_rows(const OpenCheckpoint& c, const char* group, const std::strin
   const RowReader reader(c, group, name);
   const hsize_t rows = keep.size();
   if (rows == 0 ? reader.size() != 0 : reader.size() % rows != 0)
-    fail(c.path, fmt::format("/{}/{} holds {} values for {} rows", group, name, reader.size(), rows));
+    fail(c.path,
+         fmt::format("/{}/{} holds {} values for {} rows", group, name, reader.size(), rows));
   const hsize_t width = rows == 0 ? 0 : reader.size() / rows;
   reader.for_each_block<T>(rows, width, mtype, [&](hsize_t first, std::span<const T> block) {
     for (hsize_t r = 0; r < block.size() / width; ++r)

@@ -31,7 +31,8 @@ int sync_path(const fs::path& path, int flags) {
 
 void sync_file(const fs::path& file) {
   if (const int err = sync_path(file, O_RDONLY); err != 0)
-    throw Error(file.string(), std::string("cannot sync the file to the disk: ") + std::strerror(err));
+    throw Error(file.string(),
+                std::string("cannot sync the file to the disk: ") + std::strerror(err));
 }
 
 void replace_file_durably(const fs::path& from, const fs::path& to) {

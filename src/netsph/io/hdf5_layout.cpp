@@ -10,7 +10,8 @@ hsize_t chunk_rows(hsize_t rows, hsize_t width) {
   return std::clamp<hsize_t>(rows, 1, most);
 }
 
-Handle checksummed_layout(hsize_t rows_per_chunk, hsize_t width, const std::filesystem::path& path) {
+Handle checksummed_layout(hsize_t rows_per_chunk, hsize_t width,
+                          const std::filesystem::path& path) {
   const std::string what = "cannot set up a checksummed dataset";
   Handle dcpl(check_id(H5Pcreate(H5P_DATASET_CREATE), path, what), H5Pclose);
   const std::array<hsize_t, 2> chunk = {rows_per_chunk, width};

@@ -283,8 +283,8 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
       }
       if (stepper.any(stop_requested())) {
         r.status = "interrupted";
-        r.message = fmt::format("stopped by {} at t = {:.6g} s (step {})", stop_cause(), stepper.time(),
-                                stepper.steps());
+        r.message = fmt::format("stopped by {} at t = {:.6g} s (step {})", stop_cause(),
+                                stepper.time(), stepper.steps());
         break;
       }
       particle_steps += static_cast<double>(stepper.particle_count());

@@ -198,7 +198,8 @@ NetRunReport run_standalone_nets(const CaseSpec& spec, const NetRunOptions& opti
     const int percent = static_cast<int>(100 * t / end_time);
     if (options.progress && percent / 10 != last_percent / 10) {
       // fputs, which a closed stdout (netsph run ... | head) fails quietly; fmt::print throws.
-      std::fputs(fmt::format("t = {:.3f} / {:.3f} s ({}%)\n", t, end_time, percent).c_str(), stdout);
+      std::fputs(fmt::format("t = {:.3f} / {:.3f} s ({}%)\n", t, end_time, percent).c_str(),
+                 stdout);
       last_percent = percent;
     }
   }
