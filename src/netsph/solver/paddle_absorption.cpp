@@ -29,6 +29,7 @@ void Simulation::setup_absorber() {
     absorber_points_.push_back({w.absorption.gauge_x, y, z});
   }
   absorber_values_.resize(n);
+  absorber_sums_.resize(n);
   absorber_coverage_.resize(n);
 }
 
@@ -38,10 +39,15 @@ void Simulation::update_absorber() {
   if (!absorber_ || steps_ == 0) return;
   // The device samples with the cell table of its last step; the CPU step calls this right
   // after its sort, so that a restarted run (which sorts afresh) reads the same sums.
-  if (!sample_on_device(absorber_points_, absorber_values_))
-    sample_points(scene_.model, grid_, p_, absorber_points_, absorber_values_);
-  for (std::size_t k = 0; k < absorber_values_.size(); ++k)
-    absorber_coverage_[k] = absorber_values_[k].coverage;
+  if (sample_on_device(absorber_points_, absorber_values_)) {
+    for (std::size_t k = 0; k < absorber_values_.size(); ++k)
+      absorber_coverage_[k] = absorber_values_[k].coverage;
+  } else {
+    // The coverage is the sums' volume weight (sph/shepard.hpp: shepard_value).
+    point_sums(scene_.model, grid_, p_, absorber_points_, absorber_sums_);
+    for (std::size_t k = 0; k < absorber_sums_.size(); ++k)
+      absorber_coverage_[k] = absorber_sums_[k].volume_weight;
+  }
   const WaveSpec& w = spec_.waves;
   const double eta = surface_from_coverage(absorber_z_, absorber_coverage_) - w.still_level;
   absorber_->update(time_, eta - w.target_elevation(w.absorption.gauge_x, time_));

@@ -298,6 +298,7 @@ class Simulation {
   std::vector<Vec3d> absorber_points_;
   std::vector<double> absorber_z_, absorber_coverage_;
   std::vector<ShepardValue> absorber_values_;
+  std::vector<ShepardSums> absorber_sums_;  // the CPU step's sums, kept: no allocation per step
 
   StepBackend backend_ = StepBackend::Cpu;
   std::unique_ptr<DeviceRun> device_;
