@@ -173,6 +173,14 @@ TEST(DeviceParity, HostAbsorbingPaddleMatchesTheCpuBackend) {
                         400, StepBackend::HostDevice));
 }
 
+// A flap paddle: a prescribed body turning about its hinge (the host advances it for both
+// steps; the device places its particles, their rigid velocity and mDBC ghosts from its state),
+// without a ramp so that it turns from the first step.
+TEST(DeviceParity, HostFlapPaddleMatchesTheCpuBackend) {
+  expect_parity(compare("waves/regular_flap2d.toml", {"simulation.dp=0.04", "waves.ramp=0.0"}, 300,
+                        StepBackend::HostDevice));
+}
+
 // The same comparisons with every launch's threads visited in reverse and in shuffled order
 // (and, always, uninitialised device memory as 0xFF bytes: host_exec.hpp), as a GPU runs them
 // in no fixed order: a kernel in which one particle reads what another writes in the same
@@ -548,6 +556,12 @@ TEST(DeviceParity, CudaWavesOnACurrentFromARelaxationZoneMatchesTheCpuBackend) {
   SKIP_WITHOUT_GPU();
   expect_parity(
       compare("waves/current_following2d.toml", kWavesOnACurrent, 200, StepBackend::Cuda));
+}
+
+TEST(DeviceParity, CudaFlapPaddleMatchesTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  expect_parity(compare("waves/regular_flap2d.toml", {"simulation.dp=0.04", "waves.ramp=0.0"}, 300,
+                        StepBackend::Cuda));
 }
 
 TEST(DeviceParity, CudaWithoutADeviceIsAClearError) {

@@ -106,6 +106,31 @@ TEST(Restart, AbsorbingPaddleContinuesBitForBit) {
   EXPECT_EQ(whole.absorber()->excursion(), resumed.absorber()->excursion());
 }
 
+// A flap paddle: a prescribed body turning about its hinge continues from its checkpointed
+// state (orientation, centre, rate) bit for bit, turning from the first step (no ramp).
+TEST(Restart, FlapPaddleContinuesBitForBit) {
+  const CaseSpec spec = read_case_file(std::string(NETSPH_CASES_DIR) + "/waves/regular_flap2d.toml",
+                                       {"simulation.dp=0.04", "waves.ramp=0.0"});
+  Simulation whole(spec);
+  step_n(whole, 100);
+  CheckpointData saved;
+  whole.save_state(saved);
+  step_n(whole, 150);
+  ASSERT_EQ(whole.bodies().size(), 1u);
+  EXPECT_NE(whole.bodies()[0].state.omega.y, 0.0);
+
+  Simulation resumed(spec);
+  resumed.restore_state(saved);
+  step_n(resumed, 150);
+  EXPECT_TRUE(same_bits(whole.particles().pos, resumed.particles().pos));
+  EXPECT_TRUE(same_bits(whole.particles().vel, resumed.particles().vel));
+  const RigidState &a = whole.bodies()[0].state, &b = resumed.bodies()[0].state;
+  EXPECT_EQ(a.com.x, b.com.x);
+  EXPECT_EQ(a.com.z, b.com.z);
+  EXPECT_EQ(a.q.w, b.q.w);
+  EXPECT_EQ(a.q.y, b.q.y);
+}
+
 TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
   Simulation net_case(smoke_case());
   CheckpointData saved;

@@ -16,6 +16,7 @@
 #include "netsph/run/output_particles.hpp"
 #include "netsph/run/wave_gauges.hpp"
 #include "netsph/setup/scene.hpp"
+#include "netsph/solver/body_motion.hpp"
 #include "netsph/sph/damping_zone.hpp"
 #include "netsph/waves/dispersion.hpp"
 #include "netsph/waves/wave_train.hpp"
@@ -239,6 +240,82 @@ TEST(WavesCase, ActiveAbsorptionIsSetUpFromTheWave) {
   EXPECT_DOUBLE_EQ(a.delay, distance * c.k / c.omega);
   EXPECT_GT(a.drift_time, 5 * w.period);
   EXPECT_FALSE(flume().waves.absorption.active);  // none unless asked
+}
+
+// paddle = "flap": the [[body]] turns about a hinge at the bed under its face at the rate that
+// puts its excursion at the still-water level (a depth above the hinge) on first-order flap
+// theory's motion for the wave: the angle integrated from the rate, times the depth, follows
+// X(t) of the stroke H / (H/S)_flap to the table's sampling error (as for the piston: 1% of
+// S/2 bounds the trapezoid rule's error on a sinusoid sampled 100 times a period).
+TEST(WavesCase, FlapBodyTurnsAboutItsHingeByFlapTheory) {
+  const CaseSpec spec =
+      read_case_file(std::string(NETSPH_CASES_DIR) + "/waves/regular_flap2d.toml");
+  const WaveSpec& w = spec.waves;
+  ASSERT_EQ(w.paddle, PaddleType::Flap);
+  EXPECT_FALSE(w.paddle_is_wall());
+  const BodySpec& flap = spec.bodies.at(w.body);
+  EXPECT_EQ(flap.name, "flap");
+  EXPECT_EQ(flap.motion, BodyMotion::Prescribed);
+  EXPECT_FALSE(flap.velocity.moving());
+  EXPECT_EQ(w.direction, 1);
+  EXPECT_DOUBLE_EQ(w.paddle_x, 0.0);
+  EXPECT_DOUBLE_EQ(flap.hinge.x, 0.0);
+  EXPECT_DOUBLE_EQ(flap.hinge.z, 0.0);  // the bed
+  const double k = wave_number(2 * M_PI / w.period, w.depth);
+  const double stroke = w.height / flap_height_to_stroke(k * w.depth);
+  const PaddleMotion m = train_paddle_motion(PaddleType::Flap, w.train);
+  ASSERT_EQ(m.harmonics.size(), 1u);
+  EXPECT_NEAR(m.harmonics[0].stroke, stroke, 1e-12 * stroke);
+  // A flap needs a larger stroke than a piston for the same wave (it moves less water).
+  EXPECT_GT(stroke, w.height / piston_height_to_stroke(k * w.depth));
+  // The angle from the rate about y (as displacement_from_history integrates x).
+  const VelocityHistory& h = flap.angular_velocity;
+  VelocityHistory rate_y{h.times, {}};
+  for (const Vec3d& r : h.velocities) rate_y.velocities.push_back({r.y, 0, 0});
+  double worst = 0;
+  for (double t = 0; t <= spec.simulation.end_time; t += 0.0371) {
+    double x = 0, v = 0;
+    paddle_state(m, t, x, v);
+    worst = std::max(worst, std::fabs(displacement_from_history(rate_y, t) * w.depth - x));
+    EXPECT_EQ(h.at(t).x, 0.0);
+    EXPECT_EQ(h.at(t).z, 0.0);
+  }
+  EXPECT_LT(worst, 0.01 * stroke / 2);
+  EXPECT_NEAR(w.max_excursion, stroke / 2, 1e-3 * stroke);
+}
+
+// A prescribed rotation about a hinge (a flap): the hinge does not move, every point keeps its
+// distance from it, and the body turns by the integral of its rate, exactly for a rate linear
+// in time over the step (the trapezoid rule), whatever the step; the velocity is the rigid
+// rotation's about the hinge.
+TEST(BodyMotion, PrescribedRotationTurnsAboutTheHingeByTheIntegralOfItsRate) {
+  BodySpec body;
+  body.hinge = {0.3, 0, -0.2};
+  // rate 0.5 + 2 t rad/s about y over [0, 1] s: the angle is 0.5 t + t^2.
+  body.angular_velocity.times = {0.0, 1.0};
+  body.angular_velocity.velocities = {{0, 0.5, 0}, {0, 2.5, 0}};
+  RigidState s;
+  s.com = {0.25, 0, 0.4};
+  const Vec3d arm0 = s.com - body.hinge;
+  const double dt = 0.0137;
+  double t = 0;
+  for (int n = 0; n < 50; ++n) {
+    const RigidState half = prescribed_rotation(s, body, t, false, dt);
+    EXPECT_NEAR(norm(half.com - body.hinge), norm(arm0), 1e-12);
+    s = prescribed_rotation(s, body, t, true, dt);
+    t += dt;
+  }
+  const double angle = 0.5 * t + t * t;
+  // The rotation about +y by `angle`: (x, z) -> (x cos + z sin, -x sin + z cos).
+  const Vec3d expected{body.hinge.x + arm0.x * std::cos(angle) + arm0.z * std::sin(angle), 0,
+                       body.hinge.z - arm0.x * std::sin(angle) + arm0.z * std::cos(angle)};
+  EXPECT_NEAR(s.com.x, expected.x, 1e-12);
+  EXPECT_NEAR(s.com.z, expected.z, 1e-12);
+  const Vec3d turned = rotate(s.q, Vec3d{1, 0, 0});
+  EXPECT_NEAR(std::atan2(-turned.z, turned.x), angle, 1e-12);
+  EXPECT_NEAR(s.omega.y, 0.5 + 2 * t, 1e-12);
+  const Vec3d v = cross(s.omega, s.com - body.hinge);
+  EXPECT_NEAR(norm(s.vel - v), 0.0, 1e-12);
 }
 
 TEST(WaveGauge, SurfaceIsWhereTheCoverageCrossesOneHalf) {

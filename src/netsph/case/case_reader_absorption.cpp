@@ -18,6 +18,12 @@ void CaseReader::read_absorption(const TomlTableReader& r) {
   if (r.choice("absorption", kWaveAbsorptionNames, WaveAbsorption::None) == WaveAbsorption::None)
     return;
   const toml::node& node = *r.find("absorption");
+  if (w.paddle != PaddleType::Piston) {
+    r.fail_value("absorption", node,
+                 "active absorption is built for a piston paddle (its gain is the piston's "
+                 "transfer function); absorb the waves at a flap's far end with a [[damping]] "
+                 "zone instead");
+  }
   const RegularWave* tallest = tallest_component(w.train);
   if (!tallest) r.fail_value("absorption", node, "the waves have no component to absorb");
   // The gauge stands in front of the paddle's travel, clear of its kernel (2h), and at least

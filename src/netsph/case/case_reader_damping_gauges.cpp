@@ -190,7 +190,7 @@ void CaseReader::check_gauge_position(const TomlTableReader& r, const GaugeSpec&
   const double dp = spec_.simulation.dp;
   const double support = 2 * spec_.simulation.h_over_dp * dp;
   for (const WallSpec& w : spec_.walls) {
-    const bool paddle = spec_.waves.has_paddle() && &w == &spec_.walls[spec_.waves.wall];
+    const bool paddle = spec_.waves.paddle_is_wall() && &w == &spec_.walls[spec_.waves.wall];
     const double travel = paddle ? spec_.waves.max_excursion : 0.0;
     for (const int axis : {0, 1}) {
       if (axis == 1 && is_2d()) continue;

@@ -188,6 +188,11 @@ class CaseReader {
   /// inlet's velocity.
   std::string wave_current_source() const;
   void read_wave_paddle_wall(const TomlTableReader& r, const toml::node& maker);
+  /// paddle = "flap": the [[body]] that is the paddle, which the reader sets turning
+  /// (case_reader_flap.cpp).
+  void read_wave_flap_body(const TomlTableReader& r, const toml::node& maker);
+  /// The flap's rate of turn from the paddle's sampled motion, and the tank's checks on it.
+  void set_flap_motion(const TomlTableReader& r, const SampledPaddle& s);
   /// The still-water level and depth from the fill in front of the paddle.
   void read_wave_levels(const TomlTableReader& r, const toml::node& maker);
   /// The paddle spans the water's depth (and, in 3D, its width).

@@ -65,11 +65,6 @@ void CaseReader::read_waves() {
   }
   if (r.has("relaxation_zone")) return read_relaxation_wavemaker(r);
   w.paddle = r.choice("paddle", kPaddleTypeNames, w.paddle);
-  if (w.paddle == PaddleType::Flap) {
-    r.fail_value("paddle", *r.find("paddle"),
-                 "a flap paddle rotates about a hinge, and netsph's walls only translate: not "
-                 "supported yet; use paddle = \"piston\"");
-  }
   if (!spec_.inlets.empty() || !spec_.outlets.empty()) {
     const OpenBoundarySpec& ob = spec_.inlets.empty() ? spec_.outlets[0] : spec_.inlets[0];
     r.fail_table(fmt::format(
@@ -78,9 +73,14 @@ void CaseReader::read_waves() {
         "(waves.relaxation_zone = [x_full, x_end]) instead of a paddle",
         ob.name, ob.where.str(), spec_.inlets.empty() ? "outlet" : "inlet"));
   }
-  const toml::node& maker = r.require("wavemaker", "the name of the [[wall]] that is the paddle");
+  const toml::node& maker = r.require(
+      "wavemaker", "the name of the paddle: a [[wall]] for a piston, a [[body]] for a flap");
   w.wavemaker = r.to_string("wavemaker", maker);
-  read_wave_paddle_wall(r, maker);
+  if (w.paddle == PaddleType::Flap) {
+    read_wave_flap_body(r, maker);
+  } else {
+    read_wave_paddle_wall(r, maker);
+  }
   read_wave_levels(r, maker);
   read_wave_train(r);
   check_paddle_geometry(r, maker);
@@ -197,7 +197,7 @@ void CaseReader::read_wave_levels(const TomlTableReader& r, const toml::node& ma
   }
   if (!water) {
     r.fail_value("wavemaker", maker,
-                 fmt::format("the paddle's face is at x = {} m (its wall's {} face), and no "
+                 fmt::format("the paddle's face is at x = {} m (its {} face), and no "
                              "[[fill]] lies in front of it: put the water against the paddle",
                              format_number(w.paddle_x), w.direction > 0 ? "xmin" : "xmax"));
   }
@@ -224,31 +224,45 @@ void CaseReader::read_wave_levels(const TomlTableReader& r, const toml::node& ma
 
 void CaseReader::check_paddle_geometry(const TomlTableReader& r, const toml::node& maker) const {
   const WaveSpec& w = spec_.waves;
-  const WallSpec& wall = spec_.walls[w.wall];
   const double dp = spec_.simulation.dp;
   const double bottom = w.still_level - w.depth;
   const double crest = w.still_level + w.reference_height();
-  if (wall.box.min.z > bottom + 0.5 * dp || wall.box.max.z < crest) {
-    r.fail_value(
-        "wavemaker", maker,
-        fmt::format("the paddle wall '{}' ({}) spans z from {} to {} m, and a piston "
-                    "must reach from the bottom, z = {} m, to above the crests, z = {:.4g} "
-                    "m (the still water plus the wave height): water would pass under or "
-                    "over it",
-                    wall.name, wall.where.str(), format_number(wall.box.min.z),
-                    format_number(wall.box.max.z), format_number(bottom), crest));
+  // The paddle's box and what to call it: a piston's wall, or a flap's body.
+  BoxSpec box;
+  std::string what;
+  if (w.paddle == PaddleType::Flap) {
+    const BodySpec& b = spec_.bodies[w.body];
+    box = {b.center - b.lengths * 0.5, b.center + b.lengths * 0.5};
+    what = fmt::format("the flap body '{}' ({})", b.name, b.where.str());
+    // Hinged at the bed: a box reaching below it would turn its corner through the bed's
+    // particles, one ending above it would let water under the hinge.
+    if (std::fabs(box.min.z - bottom) > 0.5 * dp) {
+      r.fail_value("wavemaker", maker,
+                   fmt::format("{} starts at z = {:.4g} m, and a flap is hinged at the bed: its "
+                               "box must start at the bottom of the water in front of it, z = "
+                               "{} m (within dp / 2)",
+                               what, box.min.z, format_number(bottom)));
+    }
+  } else {
+    const WallSpec& wall = spec_.walls[w.wall];
+    box = wall.box;
+    what = fmt::format("the paddle wall '{}' ({})", wall.name, wall.where.str());
+  }
+  if (box.min.z > bottom + 0.5 * dp || box.max.z < crest) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("{} spans z from {:.4g} to {:.4g} m, and a paddle must reach from the "
+                             "bottom, z = {} m, to above the crests, z = {:.4g} m (the still "
+                             "water plus the wave height): water would pass under or over it",
+                             what, box.min.z, box.max.z, format_number(bottom), crest));
   }
   if (is_2d()) return;
   for (const FillSpec& f : spec_.fills) {
-    if (wall.box.min.y <= f.box.min.y + 0.5 * dp && wall.box.max.y >= f.box.max.y - 0.5 * dp)
-      continue;
+    if (box.min.y <= f.box.min.y + 0.5 * dp && box.max.y >= f.box.max.y - 0.5 * dp) continue;
     r.fail_value("wavemaker", maker,
-                 fmt::format("the paddle wall '{}' ({}) spans y from {} to {} m, narrower than "
-                             "the water of the fill at {} (y from {} to {} m): a piston spans "
-                             "the tank's width",
-                             wall.name, wall.where.str(), format_number(wall.box.min.y),
-                             format_number(wall.box.max.y), f.where.str(),
-                             format_number(f.box.min.y), format_number(f.box.max.y)));
+                 fmt::format("{} spans y from {:.4g} to {:.4g} m, narrower than the water of the "
+                             "fill at {} (y from {} to {} m): a paddle spans the tank's width",
+                             what, box.min.y, box.max.y, f.where.str(), format_number(f.box.min.y),
+                             format_number(f.box.max.y)));
   }
 }
 
@@ -379,8 +393,11 @@ void CaseReader::read_generation(const TomlTableReader& r) {
     }
     return;
   }
-  const PaddleGeneration fallback = w.theory == WaveTheory::Stokes2 ? PaddleGeneration::SecondOrder
-                                                                    : PaddleGeneration::FirstOrder;
+  // A flap has first-order theory only (second-order flap generation is not built).
+  const PaddleGeneration fallback =
+      w.theory == WaveTheory::Stokes2 && w.paddle == PaddleType::Piston
+          ? PaddleGeneration::SecondOrder
+          : PaddleGeneration::FirstOrder;
   w.generation = r.choice("generation", kPaddleGenerationNames, fallback);
   const toml::node* node = r.find("generation");
   if (!node || w.generation != PaddleGeneration::SecondOrder) return;
@@ -397,7 +414,6 @@ void CaseReader::read_generation(const TomlTableReader& r) {
 
 void CaseReader::set_paddle_motion(const TomlTableReader& r) {
   WaveSpec& w = spec_.waves;
-  WallSpec& wall = spec_.walls[w.wall];
   const PaddleMotion motion = train_paddle_motion(w.paddle, w.train, w.generation);
   const double interval = paddle_sample_interval(motion);
   const double samples = spec_.simulation.end_time / interval;
@@ -416,6 +432,8 @@ void CaseReader::set_paddle_motion(const TomlTableReader& r) {
     r.fail_table("the paddle's motion is not finite: the wave is too long for the water depth");
   }
   w.max_excursion = s.max_excursion;
+  if (w.paddle == PaddleType::Flap) return set_flap_motion(r, s);
+  WallSpec& wall = spec_.walls[w.wall];
   wall.motion.times = std::move(s.times);
   wall.motion.velocities.clear();
   for (const double v : s.velocities) wall.motion.velocities.push_back({w.direction * v, 0, 0});

@@ -177,6 +177,10 @@ struct BodySpec {
   std::optional<double> mass;  ///< kg (kg/m in 2D)
   Vec3d initial_velocity{};    ///< floating, m/s
   VelocityHistory velocity;    ///< prescribed translation
+  /// Prescribed rotation about a fixed axis through `hinge` (world frame, rad/s; set by
+  /// [waves] for a flap paddle, whose motion is this rotation alone): none when empty.
+  VelocityHistory angular_velocity;
+  Vec3d hinge{};  ///< m: a point on the prescribed rotation's axis
   WallModel model = WallModel::Mdbc;
   WallSlip slip = WallSlip::WallVelocity;
   int layers = 0;  ///< shell thickness in particle layers; 0: ceil(2h/dp); -1: solid
@@ -317,8 +321,9 @@ struct WaveSpec {
   bool given = false;
   WaveKind kind = WaveKind::Regular;
   PaddleType paddle = PaddleType::Piston;
-  std::string wavemaker;  ///< the name of the [[wall]] that is the paddle
-  std::size_t wall = 0;   ///< its index in CaseSpec::walls
+  std::string wavemaker;  ///< the name of the paddle: a [[wall]] (piston) or [[body]] (flap)
+  std::size_t wall = 0;   ///< piston: its index in CaseSpec::walls
+  std::size_t body = 0;   ///< flap: its index in CaseSpec::bodies
   double height = 0;      ///< regular: H, m
   double period = 0;      ///< regular: T, s
   WaveTheory theory = WaveTheory::Linear;
@@ -350,6 +355,8 @@ struct WaveSpec {
 
   /// A paddle wall makes the waves (not a standalone case's theory, not a relaxation zone).
   bool has_paddle() const { return given && !standalone && !relaxation; }
+  /// The paddle is a piston, a [[wall]] that translates (a flap is a [[body]] that rotates).
+  bool paddle_is_wall() const { return has_paddle() && paddle == PaddleType::Piston; }
   /// The period that sets the time scales (ramp, gauge sampling): T or Tp, s.
   double reference_period() const { return kind == WaveKind::Regular ? period : jonswap.tp; }
   /// The height that sets the crests and the resolution: H or Hs, m.

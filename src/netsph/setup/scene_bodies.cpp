@@ -83,6 +83,10 @@ void add_bodies(const CaseSpec& spec, Scene& scene) {
     if (dims == 2) body.state.com.y = 0;
     body.state.q = b.orientation;
     body.state.vel = b.motion == BodyMotion::Floating ? b.initial_velocity : b.velocity.at(0.0);
+    if (b.angular_velocity.moving()) {  // a flap: turning about its hinge from the start
+      body.state.omega = b.angular_velocity.at(0.0);
+      body.state.vel = cross(body.state.omega, body.state.com - b.hinge);
+    }
     body.start = body.state;
     // A fluid without gravity gives no buoyancy: structure_gravity acts on the body's weight
     // less the fluid it displaces.

@@ -5,6 +5,24 @@
 
 namespace netsph {
 
+RigidState prescribed_rotation(const RigidState& start, const BodySpec& body, double time,
+                               bool corrector, double dt) {
+  // As a prescribed translation: the predictor turns by the start's rate over half a step, the
+  // corrector by the trapezoid rule over the whole step. Turns about one fixed axis compose
+  // exactly, so the body turns by the integral of its rate (exact for a rate linear over the
+  // step) and the hinge does not move.
+  const VelocityHistory& w = body.angular_velocity;
+  const Vec3d w0 = w.at(time), w1 = w.at(time + (corrector ? dt : 0.5 * dt));
+  const Vec3d turn = corrector ? (w0 + w1) * (0.5 * dt) : w0 * (0.5 * dt);
+  const Quat dq = Quat::from_rotation_vector(turn);
+  RigidState s;
+  s.q = normalized(dq * start.q);
+  s.com = body.hinge + rotate(dq, start.com - body.hinge);
+  s.omega = w1;
+  s.vel = cross(w1, s.com - body.hinge);
+  return s;
+}
+
 void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
                     std::vector<CoupledNet>& nets, double time, bool corrector, double dt,
                     const FluidSampler& sample, std::vector<FluidPointLoad>& water_loads) {
@@ -19,6 +37,10 @@ void advance_bodies(const CaseSpec& spec, std::vector<RigidBody>& bodies,
       case BodyMotion::Fixed:
         break;
       case BodyMotion::Prescribed: {
+        if (spec.bodies[bi].angular_velocity.moving()) {
+          b.state = prescribed_rotation(b.start, spec.bodies[bi], time, corrector, dt);
+          break;
+        }
         // As the fluid: half step with the start velocity, full step by the trapezoid rule
         // (exact for a velocity linear in time over the step).
         const VelocityHistory& v = spec.bodies[bi].velocity;
