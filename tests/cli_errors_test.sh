@@ -49,8 +49,12 @@ expect_error "--sample-steps: must be >= 1" "$netsph" -q check "$case_file" --sa
 expect_error "--threads: 100000 is more than 8 per core" \
   "$netsph" -q check "$case_file" --threads 100000
 # A domain of 1e10 m overflowed the grid's int cell counts: every particle "left the domain".
-expect_error "[domain]: the domain holds 3.17e+11 cells of the neighbour grid" \
+# Coordinates are now bounded (1e5 m); a domain within them but of too many cells is refused
+# by its cell count.
+expect_error "domain.max = [10000000000.0, 0, 8]: x must be in [-100000, 100000] m" \
   "$netsph" -q run "$case_file" --set "domain.max=[1e10,0,8]" --max-steps 1 -o "$tmp/wide" --no-plots
+expect_error "cells of the neighbour grid" \
+  "$netsph" -q run "$case_file" --set "domain.max=[1e5,0,1e5]" --max-steps 1 -o "$tmp/wide" --no-plots
 # A net of 10^5 m at 0.1 m meshes: refused by its mesh count, not by the machine's memory.
 expect_error "numerical meshes of mesh_grouping x twine_length = 0.1 m, more than 10000 a side" \
   "$netsph" -q check "$net_case" --set net.0.width=1e5
@@ -66,12 +70,13 @@ expect_error "--sizes: particle counts must be finite" "$netsph" -q bench --size
 expect_error "--only: no validation entry 'nonsense'" "$netsph" -q validate --only nonsense --list
 mkdir -p "$tmp/run_folder" && echo '{}' >"$tmp/run_folder/summary.json"
 expect_error "--times: 'abc' is not a time" "$netsph" -q plot "$tmp/run_folder" --times 0.5,abc
-# A second run into a run's folder says it replaces that run, and takes the old checkpoint
-# and summary away with it (a restart would otherwise continue the old run into the new one).
+# A second run into a run's folder keeps the earlier run: moved aside whole to <folder>.1 (a
+# restart of the folder then continues the new run, never the old one).
 "$netsph" -q run "$case_file" --max-steps 2 -o "$tmp/twice" --no-plots >"$tmp/out" 2>&1 || { cat "$tmp/out"; exit 1; }
 "$netsph" run "$case_file" --max-steps 1 -o "$tmp/twice" --no-plots >"$tmp/out" 2>&1 || { cat "$tmp/out"; exit 1; }
-grep -q "holds an earlier run of case 'dambreak2d': this run replaces it" "$tmp/out" ||
-  { echo "no warning for a run into an earlier run's folder"; cat "$tmp/out"; exit 1; }
+grep -q "held an earlier run of case 'dambreak2d': moved to $tmp/twice.1" "$tmp/out" ||
+  { echo "no word of the earlier run moved aside"; cat "$tmp/out"; exit 1; }
+[ -f "$tmp/twice.1/checkpoint.h5" ] || { echo "the earlier run's checkpoint is gone"; exit 1; }
 # A force window that no probe sample reaches: a warning (in summary.json too), not an empty
 # mean found later by a script.
 "$netsph" run "$case_file" -o "$tmp/window" --no-plots --set simulation.end_time=0.05 \

@@ -79,7 +79,7 @@ TEST(CaseOverrides, AlternativeKeysReplaceEachOther) {
 TEST(CaseOverrides, BadValueErrorNamesTheOption) {
   const Error e = error_with({"simulation.dp=-1"});
   EXPECT_EQ(e.where(), "--set simulation.dp=-1");
-  EXPECT_EQ(e.message(), "simulation.dp = -1: must be > 0 m");
+  EXPECT_EQ(e.message(), "simulation.dp = -1: must be in [1e-06, 1000] m");
 
   const Error typo = error_with({"fluid.densty=1000"});
   EXPECT_EQ(typo.where(), "--set fluid.densty=1000");

@@ -5,6 +5,8 @@
 #include "netsph/case/case_reader.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -463,7 +465,7 @@ TEST(CaseReader, SourceNameOfAStringAppearsInErrorsAndAsDefaultName) {
     FAIL() << "dp = -1 was accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.where(), "builtin:test:2:6");
-    EXPECT_EQ(e.message(), "simulation.dp = -1: must be > 0 m");
+    EXPECT_EQ(e.message(), "simulation.dp = -1: must be in [1e-06, 1000] m");
   }
   try {
     read_case_string("[simulation\n", "builtin:broken");
@@ -496,6 +498,51 @@ TEST(CaseReader, UnreadableFileIsNamed) {
     EXPECT_NE(e.message().find("cannot read the file"), std::string::npos) << e.message();
   }
   EXPECT_THROW(read_case_file(kCasesDir / "good"), Error);  // a directory
+}
+
+// /dev/zero was read until std::bad_alloc, with no file named (issue 46).
+TEST(CaseReader, DeviceOrPipeIsRefusedByName) {
+  for (const char* device : {"/dev/zero", "/dev/null", "/dev/urandom"}) {
+    if (!fs::exists(device)) continue;
+    try {
+      read_case_file(device);
+      FAIL() << device << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.where(), device);
+      EXPECT_NE(e.message().find("not a regular file"), std::string::npos) << e.message();
+    }
+  }
+  const fs::path fifo =
+      fs::temp_directory_path() / ("netsph_case_fifo_" + std::to_string(::getpid()));
+  fs::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    read_case_file(fifo);  // must not wait for a writer
+    ADD_FAILURE() << "a FIFO was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("not a regular file"), std::string::npos) << e.message();
+  }
+  fs::remove(fifo);
+}
+
+TEST(CaseReader, FileLargerThanTheLimitIsRefusedByName) {
+  const fs::path big =
+      fs::temp_directory_path() / ("netsph_case_big_" + std::to_string(::getpid()) + ".toml");
+  {
+    std::ofstream out(big, std::ios::binary);
+    out << kMinimal;
+    out << std::string(kMaxCaseFileBytes, '#');  // a comment: valid TOML, only too long
+  }
+  try {
+    read_case_file(big);
+    ADD_FAILURE() << "a file of " << fs::file_size(big) << " bytes was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), big.string());
+    EXPECT_NE(e.message().find("larger than 4 MiB"), std::string::npos) << e.message();
+  }
+  fs::resize_file(big, std::string_view(kMinimal).size());
+  EXPECT_NO_THROW(read_case_file(big));
+  fs::remove(big);
 }
 
 TEST(SourceLocation, FormatsFileLineColumn) {

@@ -15,6 +15,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -28,6 +30,7 @@
 
 #include "netsph/core/error.hpp"
 #include "netsph/io/checkpoint_file.hpp"
+#include "netsph/io/csv_series.hpp"
 #include "netsph/io/snapshot_writer.hpp"
 
 namespace netsph {
@@ -293,6 +296,48 @@ TEST(FullDisk, AFailedSnapshotIsOneMessageAndNoFile) {
         << where << ":\n"
         << err;
     expect_one_message(err, where);
+  }
+}
+
+/// Appends rows to a series until a write fails; exits kAsExpected when it threw
+/// netsph::Error naming the file.
+int failing_series_write(const fs::path& file) {
+  CsvSeries csv(file, {{"time", "s"}, {"mass", "kg"}, {"energy", "J"}, {"step", ""}});
+  try {
+    for (int i = 0; i < 1000000; ++i) {
+      const double t = 0.001 * i;
+      const std::array<double, 4> row{t, 1000.0 + 1e-7 * i, 3.14159265 * t, double(i)};
+      csv.append(row);
+    }
+  } catch (const Error& e) {
+    return std::string(e.where()) == file.string() ? kAsExpected : kBadMessage;
+  }
+  return kNoError;
+}
+
+// issue 46: a full disk while writing series.csv left half a row, which pandas reads as a row
+// of NaN or refuses. At limits that cut the file at many points within a row, the series
+// keeps whole rows only: every line ends with its newline and has all its columns.
+TEST(FullDisk, AFailedSeriesRowLeavesOnlyCompleteRows) {
+  TempDir tmp;
+  std::string err;
+  const fs::path file = tmp.path() / "series.csv";
+  for (const rlim_t limit : {rlim_t{100}, rlim_t{1001}, rlim_t{4093}, rlim_t{20011}}) {
+    const std::string where = "file size limit " + std::to_string(limit);
+    ASSERT_EQ(in_child([&] { return failing_series_write(file); }, err, limit), kAsExpected)
+        << where << ":\n"
+        << err;
+    const std::string text = text_of(file);
+    ASSERT_FALSE(text.empty()) << where;
+    EXPECT_EQ(text.back(), '\n') << where << ": the file ends in half a row";
+    std::size_t rows = 0, start = 0;
+    for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+      const std::string line = text.substr(start, end - start);
+      EXPECT_EQ(std::count(line.begin(), line.end(), ','), 3) << where << ": " << line;
+      ++rows;
+    }
+    EXPECT_GT(rows, 1u) << where;
+    EXPECT_LE(text.size(), limit) << where;
   }
 }
 

@@ -46,10 +46,7 @@ std::pair<std::string, std::string> case_text(const CaseChoice& choice) {
         choice.path.empty() ? std::string(kDefaultCase) : choice.path.substr(8);
     return {std::string(builtin_case_text(name)), "builtin:" + name};
   }
-  std::ifstream in(choice.path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return {text.str(), choice.path};
+  return {read_file_text(choice.path), choice.path};
 }
 
 int apply_threads(int threads) {

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <fmt/format.h>
@@ -53,6 +54,9 @@ int check_command(const CheckArgs& args) {
   log_scene(sim, particles,
             std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count());
 
+  // Before the sample steps: from t = 0, the whole run's snapshots.
+  const SnapshotVolume snapshots = snapshot_volume(sim, particles);
+
   // A short timing sample: the first step also sizes every work array, so memory is known.
   const auto t0 = std::chrono::steady_clock::now();
   sim.step();
@@ -86,9 +90,15 @@ int check_command(const CheckArgs& args) {
       "varies as the flow develops: take this as an order of magnitude)",
       spec.simulation.end_time, n_total, wall_estimate(n_total * per_step),
       per_step / mean_dt / 3600);
-  if (spec.output.snapshots)
-    spdlog::info("{}", describe_snapshots(sim, snapshot_volume(sim, particles)));
+  if (spec.output.snapshots) spdlog::info("{}", describe_snapshots(sim, snapshots));
   spdlog::info("a series row every {:g} s", series_interval(spec));
+  // The folder the run would write to: its free space against the outputs (issue 46).
+  const std::filesystem::path out = args.out_dir.empty()
+                                        ? std::filesystem::path("out") / spec.simulation.name
+                                        : std::filesystem::path(args.out_dir);
+  const double checkpoint = checkpoint_bytes(particles.count(ParticleSelection::All));
+  warn_if_output_overfills((spec.output.snapshots ? snapshots.total() : 0) + checkpoint,
+                           spec.output.snapshots ? "snapshots and checkpoint" : "checkpoint", out);
   return 0;
 }
 

@@ -29,31 +29,21 @@
 namespace netsph::app {
 namespace {
 
-/// Logs what the snapshots will take and warns when that is more than the disk holds free: a
-/// run that fills the disk fails at its next write, hours in.
-void warn_if_snapshots_overfill(const Simulation& sim, OutputParticles& particles,
-                                const std::filesystem::path& out) {
+/// Logs what the snapshots will take and warns when the outputs (snapshots and checkpoint) are
+/// more than the disk holds free: a run that fills the disk fails at its next write, hours in.
+void warn_if_outputs_overfill(const Simulation& sim, OutputParticles& particles,
+                              const std::filesystem::path& out) {
+  const bool snapshots = sim.spec().output.snapshots;
   const SnapshotVolume v = snapshot_volume(sim, particles);
-  spdlog::info("{}", describe_snapshots(sim, v));
-  if (v.particles == 0 && sim.spec().output.snapshot_region) {
+  if (snapshots) spdlog::info("{}", describe_snapshots(sim, v));
+  if (snapshots && v.particles == 0 && sim.spec().output.snapshot_region) {
     spdlog::warn(
         "output.snapshot_region holds no particle at the start: the snapshots stay empty until "
         "particles move into it (check its min and max against the water and the walls)");
   }
-  std::filesystem::path at = std::filesystem::absolute(out);
-  std::error_code ec;
-  while (!std::filesystem::exists(at, ec) && at.has_parent_path() && at != at.parent_path())
-    at = at.parent_path();
-  const std::filesystem::space_info space = std::filesystem::space(at, ec);
-  if (ec) return;
-  const double free_bytes = static_cast<double>(space.available);
-  if (v.total() > free_bytes) {
-    spdlog::warn(
-        "the snapshots need about {} but {} has {} free: set output.snapshot_region (a slice), a "
-        "larger output.snapshot_every, or output.snapshots = false (probes, nets and forces are "
-        "written either way)",
-        format_bytes(v.total()), at.string(), format_bytes(free_bytes));
-  }
+  const double checkpoint = checkpoint_bytes(particles.count(ParticleSelection::All));
+  warn_if_output_overfills((snapshots ? v.total() : 0) + checkpoint,
+                           snapshots ? "snapshots and checkpoint" : "checkpoint", out);
 }
 extern "C" void on_interrupt(int signal) {
   request_stop(signal);
@@ -101,7 +91,7 @@ std::optional<FolderCase> case_of_run_folder(const std::filesystem::path& dir) {
   return f;
 }
 
-/// A new run into a folder that holds an earlier run replaces it: said, not done silently, and
+/// With --overwrite, a new run into a folder that holds an earlier run replaces it: said, and
 /// done whole at once. The earlier run's checkpoint.h5 and summary.json go now, so that a new
 /// run stopped early never leaves the old checkpoint and summary beside its own series and
 /// snapshots (a --restart would then continue the wrong run); its snapshots go when the
@@ -110,15 +100,13 @@ void replace_earlier_run(const std::filesystem::path& out) {
   namespace fs = std::filesystem;
   const fs::path summary = out / "summary.json", checkpoint = checkpoint_path(out);
   std::error_code ec;
-  const bool had_summary = fs::exists(summary, ec), had_checkpoint = fs::exists(checkpoint, ec);
-  if (!had_summary && !had_checkpoint) return;
   const std::optional<FolderCase> earlier = case_of_run_folder(out);
   const std::string what =
       earlier ? fmt::format("an earlier run of case '{}'", earlier->name) : "an earlier run";
   spdlog::warn(
-      "{} holds {}: this run replaces it (its snapshots, series.csv, summary.json{}). To keep a "
-      "run, give each its own folder with -o; to continue one, use netsph run --restart {}",
-      out.string(), what, had_checkpoint ? " and checkpoint.h5" : "", out.string());
+      "{} holds {}: --overwrite: this run replaces it (its snapshots, series.csv, "
+      "summary.json and checkpoint.h5)",
+      out.string(), what);
   fs::remove(summary, ec);
   fs::remove(checkpoint, ec);
 }
@@ -267,6 +255,7 @@ void check_checkpoint_is_the_folders(const std::string& dir, const CaseSpec& spe
 
 int exit_status(const RunReport& r) {
   if (r.status == "unstable") return 3;
+  if (r.status == "output failed") return 1;
   if (r.status == "interrupted") return 130;
   return 0;
 }
@@ -298,6 +287,11 @@ int report_run(const RunReport& r, const std::filesystem::path& out, bool plots)
                   out.string());
   }
   if (r.status == "interrupted") spdlog::warn("{}", r.message);
+  if (r.status == "output failed") {
+    spdlog::error("the run's outputs could not be written: {}", r.message);
+    spdlog::error("what was written before is kept in {}{}", out.string(),
+                  r.checkpoint_time >= 0 ? " (with its last complete checkpoint)" : "");
+  }
   return exit_status(r);
 }
 
@@ -333,6 +327,11 @@ int run_command(const RunArgs& args) {
     throw Error("--restart",
                 "a restart continues in the folder it restarts (" + restart_dir +
                     "): -o does not apply; copy the folder first to keep the original");
+  }
+  if (restart && args.overwrite) {
+    throw Error("--overwrite",
+                "a restart continues the run in its folder and replaces nothing: leave out "
+                "--overwrite");
   }
   CheckpointData checkpoint, record;
   std::vector<std::string> overrides = args.case_choice.overrides;
@@ -371,10 +370,30 @@ int run_command(const RunArgs& args) {
                                     : args.out_dir.empty()
                                         ? std::filesystem::path("out") / spec.simulation.name
                                         : std::filesystem::path(args.out_dir);
+  // A run never destroys an earlier run's results unasked: without --overwrite they move aside
+  // to <folder>.<n> (the first free n) and this run gets the folder afresh, so the same
+  // command typed twice works and out/<name> always holds the latest run (docs/ARCHITECTURE.md).
+  const std::string where = restart ? "--restart" : args.out_dir.empty() ? "output folder" : "-o";
+  std::optional<std::filesystem::path> moved_to;
+  std::optional<FolderCase> moved_case;
+  if (reporting && !restart && !args.overwrite) {
+    moved_case = case_of_run_folder(out);
+    moved_to = move_earlier_run_aside(out, where);
+  }
+  const bool replace = reporting && !restart && args.overwrite && holds_earlier_run(out);
   // Every process alike, so that all stop together when the folder cannot be made.
-  create_output_folder(out, restart ? "--restart" : args.out_dir.empty() ? "output folder" : "-o");
+  create_output_folder(out, where);
   if (reporting) log_also_to_file(out / "log.txt", restart);
-  if (reporting && !restart) replace_earlier_run(out);
+  if (replace) replace_earlier_run(out);
+  if (moved_to) {
+    spdlog::warn(
+        "{} held {}: moved to {} (nothing deleted; add --overwrite to replace an "
+        "earlier run instead)",
+        out.string(),
+        moved_case ? fmt::format("an earlier run of case '{}'", moved_case->name)
+                   : std::string("an earlier run's results"),
+        moved_to->string());
+  }
 
   spdlog::info("netsph {} run: case '{}' from {}", NETSPH_VERSION, spec.simulation.name,
                spec.source);
@@ -407,7 +426,7 @@ int run_command(const RunArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - built).count();
   if (const Simulation* view = stepper->view()) {
     log_scene(*view, stepper->particles(), setup_s);
-    if (spec.output.snapshots) warn_if_snapshots_overfill(*view, stepper->particles(), out);
+    warn_if_outputs_overfill(*view, stepper->particles(), out);
     stepper->outputs_written();
   } else {
     stepper->serve_outputs();

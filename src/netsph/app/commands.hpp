@@ -32,6 +32,8 @@ struct RunArgs {
   bool plain_progress = false;
   bool quiet = false;
   bool plots = true;  ///< PNG plots at the end (when matplotlib is there)
+  /// Replace an earlier run in the output folder instead of moving it aside to <folder>.<n>.
+  bool overwrite = false;
   /// Continue the run in this folder from its checkpoint. Optional rather than empty when not
   /// given, so that `--restart ""` (an unset shell variable) is an error, not a new run.
   std::optional<std::string> restart_dir;
@@ -49,6 +51,7 @@ struct CheckArgs {
   int threads = 0;
   int sample_steps = 20;
   std::string backend = "auto";  ///< whose memory and speed the check reports
+  std::string out_dir;           ///< where the run would write (empty: out/<case name>)
 };
 int check_command(const CheckArgs& args);
 

@@ -75,6 +75,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--max-steps", run.max_steps, "stop after this many steps (0: no limit)");
   run_cmd->add_flag("--plain-progress", run.plain_progress,
                     "progress as periodic lines, not a bar");
+  run_cmd->add_flag("--overwrite", run.overwrite,
+                    "replace an earlier run's results in the output folder (without it they are "
+                    "moved aside to <folder>.1, .2, ...)");
   run_cmd->add_option("--restart", run.restart_dir,
                       "continue the run in this output folder from its checkpoint.h5");
   run_cmd
@@ -102,6 +105,9 @@ int main(int argc, char** argv) {
       "validate a case; print particle counts, memory, initial dt and a run-time estimate");
   add_case_options(check_cmd, check.case_choice);
   check_cmd->add_option("--threads", check.threads, "OpenMP threads (0: all cores)");
+  check_cmd->add_option("-o,--output", check.out_dir,
+                        "the folder the run would write to, whose free space is checked against "
+                        "the run's outputs (default: out/<case name>)");
   check_cmd->add_option("--sample-steps", check.sample_steps, "steps timed for the estimate")
       ->capture_default_str();
   check_cmd

@@ -69,8 +69,43 @@ SnapshotVolume snapshot_volume(const Simulation& sim, OutputParticles& particles
   v.particles = particles.count(ParticleSelection::Snapshot);
   v.bytes_each = static_cast<double>(v.particles * SnapshotWriter::bytes_per_particle());
   const double every = snapshot_interval(spec);
-  v.count = every > 0 ? std::ceil(spec.simulation.end_time / every - 1e-9) + 1 : 1;
+  // The snapshots still to write: from t = 0 the start's and one per interval; a restart's
+  // from its own time on, at the (new) interval's multiples after it (RunOutputs::restore_state),
+  // not the whole run's (issue 46: a restart announced the count of a run from t = 0).
+  const double t0 = sim.time(), end = spec.simulation.end_time;
+  if (every <= 0) {
+    v.count = 1;
+  } else if (t0 <= 0) {
+    v.count = std::ceil(end / every - 1e-9) + 1;
+  } else {
+    v.count = std::max(0.0, std::floor(end / every + 1e-9) - std::floor(schedule_time(t0) / every));
+  }
   return v;
+}
+
+double checkpoint_bytes(std::uint64_t particles) {
+  // A particle's state in a checkpoint: position (3 doubles), velocity and ghost vector (3
+  // floats each), density, kind, id and group: 61 B; 64 B with the chunks' checksums and index.
+  constexpr double kBytesPerParticle = 64;
+  return 2 * kBytesPerParticle * static_cast<double>(particles);
+}
+
+bool warn_if_output_overfills(double bytes, const std::string& what,
+                              const std::filesystem::path& out) {
+  std::error_code ec;
+  std::filesystem::path at = std::filesystem::absolute(out, ec);
+  while (!std::filesystem::exists(at, ec) && at.has_parent_path() && at != at.parent_path())
+    at = at.parent_path();
+  const std::filesystem::space_info space = std::filesystem::space(at, ec);
+  if (ec) return false;
+  const double free_bytes = static_cast<double>(space.available);
+  if (bytes <= free_bytes) return false;
+  spdlog::warn(
+      "the run's outputs ({}) need about {} but {} has {} free: the run would fail when the disk "
+      "fills; free space, write elsewhere with -o, or write less (output.snapshot_region, a "
+      "larger output.snapshot_every, output.snapshots = false)",
+      what, format_bytes(bytes), at.string(), format_bytes(free_bytes));
+  return true;
 }
 
 std::string format_bytes(double b) {

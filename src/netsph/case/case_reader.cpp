@@ -3,13 +3,14 @@
 // table is read by a TomlTableReader that rejects unknown keys first, then reads and range-checks
 // the keys in a fixed order; cross-key rules (boxes, 2D, domain) come after the keys they use.
 // docs/case-reference.md documents every key; keep the two in step.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -146,7 +147,6 @@ void CaseReader::read_simulation(const std::string& default_name) {
   s.name = r.string("name", default_name);
   if (r.has("name") && s.name.empty()) r.fail_value("name", *r.find("name"), "must not be empty");
   // The name is the default output folder (out/<name>): a path in it would write elsewhere.
-  // Other characters (spaces, brackets) make odd folder names but stay inside out/.
   const bool escapes =
       s.name == "." || s.name == ".." || s.name.find_first_of("/\\:") != std::string::npos;
   if (r.has("name") && escapes) {
@@ -154,28 +154,35 @@ void CaseReader::read_simulation(const std::string& default_name) {
                  "must not be a path: no '/', '\\' or ':', and not '.' or '..' (the run writes "
                  "to out/<name> unless -o names a folder)");
   }
-  // A control character (a NUL cuts the folder name short, a newline splits it), a name of
-  // blanks or one longer than file systems allow would fail only when the output folder is
-  // made, or make a folder nobody can type.
-  const bool control = std::any_of(s.name.begin(), s.name.end(), [](char c) {
-    return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
-  });
-  const bool blank_edge =
-      !s.name.empty() && (std::isspace(static_cast<unsigned char>(s.name.front())) ||
-                          std::isspace(static_cast<unsigned char>(s.name.back())));
+  // The name becomes a folder name that users type, list and pass to scripts, so it is held to a
+  // portable set (POSIX's portable file name characters): letters, digits, '_', '-' and '.',
+  // not starting with '-' (read as an option) or '.' (a hidden folder). Anything else made
+  // folders that fail or mislead: a control character (a NUL cuts the name short, a newline
+  // splits it), a bidirectional override (U+202E shows "exe.txt" for "txt.exe"), a zero-width
+  // or other format character, a blank at an end, a non-ASCII letter in another normalisation
+  // (two names that look the same), a name longer than file systems allow.
   constexpr std::size_t kLongestName = 200;
-  if (r.has("name") && (control || blank_edge || s.name.size() > kLongestName)) {
+  const auto portable = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 0x80;
+  };
+  const bool safe = !s.name.empty() && s.name.size() <= kLongestName && s.name.front() != '-' &&
+                    s.name.front() != '.' && std::all_of(s.name.begin(), s.name.end(), [&](char c) {
+                      return portable(c) || c == '_' || c == '-' || c == '.';
+                    });
+  if (r.has("name") && !safe) {
     r.fail_value("name", *r.find("name"),
-                 fmt::format("must be a folder name of at most {} bytes, with no control "
-                             "characters and no spaces at its ends (the run writes to out/<name> "
-                             "unless -o names a folder)",
+                 fmt::format("must be a folder name of ASCII letters, digits, '_', '-' and '.', "
+                             "not starting with '-' or '.', at most {} bytes (the run writes to "
+                             "out/<name> unless -o names a folder)",
                              kLongestName));
   }
   s.dimensions = static_cast<int>(r.integer("dimensions", IntRule{2, 3}, 3));
-  s.dp = r.number("dp", NumberRule::positive("m"), 0.0);  // required unless net-only: require_dp
+  s.dp = r.number("dp", NumberRule::closed(kSmallestDp, kLargestDp, "m"),
+                  0.0);  // required unless net-only: require_dp
   s.h_over_dp = r.number("h_over_dp", NumberRule::closed(1, 3, ""), s.h_over_dp);
   s.kernel = r.choice("kernel", kKernelTypeNames, s.kernel);
-  s.end_time = r.required_number("end_time", NumberRule::positive("s"), "simulated time, s, > 0");
+  s.end_time = r.required_number("end_time", NumberRule::left_open(0, kLongestEndTime, "s"),
+                                 "simulated time, s, > 0");
   s.cfl = r.number("cfl", NumberRule::left_open(0, 1, ""), s.cfl);
   s.dt_min = r.number("dt_min", NumberRule::non_negative("s"), s.dt_min);
   s.dt_max = r.number("dt_max", NumberRule::non_negative("s"), s.dt_max);
@@ -216,7 +223,8 @@ void CaseReader::read_fluid() {
   TomlTableReader r(*table, "fluid", "[fluid]", keys_of("fluid"), source_, home_hint);
   FluidSpec& f = spec_.fluid;
   f.density = r.number("density", NumberRule::closed(1, 1e5, "kg/m^3"), f.density);
-  f.sound_speed = r.number("sound_speed", NumberRule::positive("m/s"), f.sound_speed);
+  f.sound_speed =
+      r.number("sound_speed", NumberRule::left_open(0, kMostSoundSpeed, "m/s"), f.sound_speed);
   f.sound_speed_coef =
       r.number("sound_speed_coef", NumberRule::closed(1, 1000, ""), f.sound_speed_coef);
   if (r.has("sound_speed") && r.has("sound_speed_coef")) {
@@ -227,7 +235,7 @@ void CaseReader::read_fluid() {
   f.gamma = r.number("gamma", NumberRule::closed(1, 10, ""), f.gamma);
   f.background_pressure =
       r.number("background_pressure", NumberRule::closed(0, 1e8, "Pa"), f.background_pressure);
-  f.gravity = read_in_plane_vector(r, "gravity", NumberRule::any("m/s^2"), f.gravity);
+  f.gravity = read_in_plane_vector(r, "gravity", gravity_rule(), f.gravity);
   if (const toml::node* node = r.find("structure_gravity")) {
     if (norm2(f.gravity) > 0) {
       r.fail_value("structure_gravity", *node,
@@ -236,8 +244,7 @@ void CaseReader::read_fluid() {
                                "and their weight from gravity itself",
                                format_vec3(f.gravity)));
     }
-    f.structure_gravity =
-        read_in_plane_vector(r, "structure_gravity", NumberRule::any("m/s^2"), Vec3d{});
+    f.structure_gravity = read_in_plane_vector(r, "structure_gravity", gravity_rule(), Vec3d{});
   }
   read_viscosity(r);
   read_density_diffusion(r);
@@ -324,7 +331,7 @@ void CaseReader::read_shifting(const TomlTableReader& fluid) {
 
 Vec3d CaseReader::read_position(const TomlTableReader& r, std::string_view key,
                                 std::string_view meaning) const {
-  Vec3d p = r.required_vec3(key, NumberRule::any("m"), meaning);
+  Vec3d p = r.required_vec3(key, coordinate_rule(), meaning);
   if (is_2d()) p.y = 0;  // y is ignored in 2D: normalise so later stages need not care
   return p;
 }
@@ -363,7 +370,7 @@ VelocityHistory CaseReader::read_velocity_history(const TomlTableReader& r,
   }
   if (velocity) {
     history.times = {0.0};
-    history.velocities = {read_in_plane_vector(r, velocity_key, NumberRule::any("m/s"), {})};
+    history.velocities = {read_in_plane_vector(r, velocity_key, velocity_rule(), {})};
     return history;
   }
   if (!node) return history;
@@ -392,7 +399,7 @@ VelocityHistory CaseReader::read_velocity_history(const TomlTableReader& r,
   for (std::size_t i = 0; i < array->size(); ++i) {
     const std::string key = fmt::format("velocities[{}]", i + 1);
     const toml::node& element = (*array)[i];
-    const Vec3d v = m.to_vec3(key, element, NumberRule::any("m/s"));
+    const Vec3d v = m.to_vec3(key, element, velocity_rule());
     check_in_plane(m, key, element, v);
     history.velocities.push_back(v);
   }
@@ -462,8 +469,8 @@ FillSpec CaseReader::read_fill(const toml::table& table, int number) const {
   FillSpec fill;
   fill.where = r.location();
   fill.box = read_box(r, "the fluid box");
-  fill.velocity = read_in_plane_vector(r, "velocity", NumberRule::any("m/s"), fill.velocity);
-  fill.surface_z = r.optional_number("surface_z", NumberRule::any("m"));
+  fill.velocity = read_in_plane_vector(r, "velocity", velocity_rule(), fill.velocity);
+  fill.surface_z = r.optional_number("surface_z", coordinate_rule());
   if (fill.surface_z && *fill.surface_z < fill.box.min.z) {
     r.fail_value("surface_z", *r.find("surface_z"),
                  fmt::format("must be >= the box's min z ({} m): the free surface cannot lie "
@@ -669,21 +676,44 @@ CaseSpec read_case(std::string_view text, const std::string& source_name,
 
 }  // namespace
 
-std::string read_file_text(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw Error(path.string(), "cannot read the file: it is a directory");
+std::string read_file_text(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  const auto fail = [&](const std::string& why) {
+    throw Error(path.string(), "cannot read the file: " + why);
+  };
+  // O_NONBLOCK: opening a FIFO with no writer must not wait for one (a regular file ignores it).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) fail(std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) fail(std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) fail("it is a directory");
+  // A device (/dev/zero, /dev/urandom), a FIFO or a socket has no end or no size to check:
+  // reading one ran until std::bad_alloc. A case is a file on disk.
+  if (!S_ISREG(st.st_mode)) {
+    fail("it is not a regular file (a device, a pipe or a socket); give a file on disk");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw Error(path.string(), fmt::format("cannot read the file: {}", std::strerror(errno)));
+  const auto too_big = [&] {
+    fail(
+        fmt::format("it is larger than {} MiB, the limit for a case file (the largest case "
+                    "shipped is 5 KB)",
+                    max_bytes >> 20));
+  };
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) too_big();
+  std::string text;
+  text.reserve(static_cast<std::size_t>(st.st_size));
+  char buffer[1 << 16];
+  for (;;) {  // read to the end, which a file still growing may put beyond st_size
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail(std::strerror(errno));
+    if (n == 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+    if (text.size() > max_bytes) too_big();
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    throw Error(path.string(), fmt::format("cannot read the file: {}", std::strerror(errno)));
-  }
-  return text.str();
+  return text;
 }
 
 CaseSpec read_case_file(const std::filesystem::path& path,

@@ -2,6 +2,7 @@
 // Reads and validates a TOML case file into a CaseSpec. Every key is checked: a bad value,
 // a missing required key or an unknown key (a typo) throws netsph::Error naming the file,
 // line, column, key, the bad value and what is allowed.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -22,7 +23,15 @@ CaseSpec read_case_string(std::string_view toml_text, const std::string& source_
                           const std::vector<std::string>& overrides = {},
                           const std::string& default_name = {});
 
-/// A whole file as text; throws netsph::Error naming the file when it cannot be read.
-std::string read_file_text(const std::filesystem::path& path);
+/// The most a case file may hold: 4 MiB, about 800 times the largest case shipped (5 KB), room
+/// for a prescribed motion's history of some 50,000 samples. toml++ makes a node of every
+/// value, several times the text's size in memory, so an unbounded file (a device such as
+/// /dev/zero, a log given by mistake) would exhaust memory before any message.
+inline constexpr std::uintmax_t kMaxCaseFileBytes = std::uintmax_t{4} << 20;
+
+/// A whole regular file of at most `max_bytes` as text; throws netsph::Error naming the file
+/// when it cannot be read, is not a regular file (a device, a pipe) or is larger.
+std::string read_file_text(const std::filesystem::path& path,
+                           std::uintmax_t max_bytes = kMaxCaseFileBytes);
 
 }  // namespace netsph

@@ -432,12 +432,13 @@ void CaseReader::read_body_motion(const TomlTableReader& r, BodySpec& body) cons
                       r.title(), mass_unit));
     }
     if (density) {
-      body.density = r.to_number("density", *density, NumberRule::positive("kg/m^3"));
+      body.density =
+          r.to_number("density", *density, NumberRule::left_open(0, kMostDensity, "kg/m^3"));
     } else {
       body.mass = r.to_number("mass", *mass, NumberRule::positive(mass_unit));
     }
     body.initial_velocity =
-        read_in_plane_vector(r, "initial_velocity", NumberRule::any("m/s"), body.initial_velocity);
+        read_in_plane_vector(r, "initial_velocity", velocity_rule(), body.initial_velocity);
   } else if (body.motion == BodyMotion::Prescribed) {
     body.velocity = read_velocity_history(r, "velocity", "motion_history");
     if (!body.velocity.moving()) {

@@ -200,7 +200,7 @@ OpenBoundarySpec CaseReader::read_open_boundary(const toml::table& table, bool i
                              "fluid.gravity = {} has z = 0; use \"extrapolated\" or \"reference\"",
                              format_vec3(spec_.fluid.gravity)));
   }
-  ob.surface_z = r.optional_number("surface_z", NumberRule::any("m"));
+  ob.surface_z = r.optional_number("surface_z", coordinate_rule());
   return ob;
 }
 
@@ -346,7 +346,7 @@ void CaseReader::read_open_velocity(const TomlTableReader& r, bool inlet,
                              r.key_path("velocity")));
   }
   if (velocity) {
-    const double u = r.to_number("velocity", *velocity, NumberRule::any("m/s"));
+    const double u = r.to_number("velocity", *velocity, velocity_rule());
     if (u <= 0) {
       r.fail_value("velocity", *velocity,
                    inlet ? "must be > 0 m/s: it is the inflow speed normal to the face, into "
@@ -381,10 +381,10 @@ void CaseReader::read_profile(const TomlTableReader& r, OpenBoundarySpec& ob) co
   const std::string path = r.key_path("profile");
   TomlTableReader p(table, path, path, kProfileKeys, source_);
   const toml::node& z = p.require("z", "heights in m, at least 2, strictly increasing");
-  ob.profile_z = p.to_number_array("z", z, NumberRule::any("m"), 2);
+  ob.profile_z = p.to_number_array("z", z, coordinate_rule(), 2);
   check_increasing(p, "z", z, ob.profile_z);
   const toml::node& u = p.require("u", "inflow speeds in m/s, >= 0, one per height");
-  ob.profile_u = p.to_number_array("u", u, NumberRule::non_negative("m/s"), 2);
+  ob.profile_u = p.to_number_array("u", u, NumberRule::closed(0, kMostSpeed, "m/s"), 2);
   if (ob.profile_u.size() != ob.profile_z.size()) {
     p.fail_value("u", u,
                  fmt::format("must hold one speed per height: {}.z has {} elements, u has {}", path,

@@ -17,6 +17,47 @@
 
 namespace netsph::case_detail {
 
+// ---- bounds on numbers the physics overflows beyond ---------------------------------------
+// "Finite" is not enough: gravity = [0, 0, -1e308] passed and the run failed at t = 0 with a
+// non-finite state; end_time = 1e308 was accepted. Each bound below is far outside any case
+// netsph is for (water, nets and cages, laboratory to farm scale) and inside what its float
+// fields and double clocks carry; the reader names the key, the value and the range.
+
+/// |g| beyond 1000 m/s^2 (100 g) is no gravity water meets; c0 = coef sqrt(|g| H) and the
+/// hydrostatic pressure rho g H stay far inside a float's range.
+inline constexpr double kMostGravity = 1e3;
+/// A velocity beyond 1000 m/s would need c0 beyond 10000 m/s (kMostSoundSpeed) to stay
+/// weakly compressible (Mach < 0.1); no flow netsph models comes near it.
+inline constexpr double kMostSpeed = 1e3;
+/// c0 beyond 10000 m/s: water's real sound speed is 1480 m/s and WCSPH uses ~10 x the flow
+/// speed, far less; rho0 c0^2 (the EOS's stiffness) stays inside a float.
+inline constexpr double kMostSoundSpeed = 1e4;
+/// A simulated time beyond 10^6 s (11.6 days) needs, at the largest dt a case could take,
+/// more steps than a run ever makes; beyond about 10^9 s a step of 1e-6 s is smaller than half
+/// the clock's double spacing, so time + dt == time and the run would never end.
+inline constexpr double kLongestEndTime = 1e6;
+/// dp below 1 micrometre leaves the continuum and underflows a float particle mass and volume
+/// (dp^3); above 1 km the kernel and the domain's cell count lose meaning.
+inline constexpr double kSmallestDp = 1e-6;
+inline constexpr double kLargestDp = 1e3;
+/// Coordinates beyond 100 km: positions are doubles but the interaction view keeps them as
+/// floats relative to the grid's origin (1e-7 of the domain's size), and a domain of 1e308 m
+/// overflows its cell count.
+inline constexpr double kFarthestCoordinate = 1e5;
+/// A solid's density beyond 100000 kg/m^3 (osmium, the densest element, is 22590), as the
+/// fluid's.
+inline constexpr double kMostDensity = 1e5;
+
+inline NumberRule gravity_rule() {
+  return NumberRule::closed(-kMostGravity, kMostGravity, "m/s^2");
+}
+inline NumberRule velocity_rule() {
+  return NumberRule::closed(-kMostSpeed, kMostSpeed, "m/s");
+}
+inline NumberRule coordinate_rule() {
+  return NumberRule::closed(-kFarthestCoordinate, kFarthestCoordinate, "m");
+}
+
 // ---- schema: allowed keys per table, in the order the reference documents them ----------
 
 struct TableKeys {

@@ -280,8 +280,7 @@ void CaseReader::read_current() {
   CurrentSpec& c = spec_.current;
   c.given = true;
   c.where = r.location();
-  c.velocity =
-      r.required_vec3("velocity", NumberRule::any("m/s"), "current velocity [u, v, w], m/s");
+  c.velocity = r.required_vec3("velocity", velocity_rule(), "current velocity [u, v, w], m/s");
   c.model = r.choice("model", kNetLoadModelNames, c.model);
   c.screen = r.choice("screen", kScreenCoefficientsNames, c.screen);
   if (c.model != NetLoadModel::Screen) {

@@ -1,5 +1,8 @@
 #include "netsph/io/csv_series.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <utility>
 
@@ -7,6 +10,8 @@
 #include <cmath>
 #include <cstring>
 #include <string_view>
+
+#include <fmt/format.h>
 
 #include "netsph/core/error.hpp"
 
@@ -80,19 +85,40 @@ std::string header_before_relabelling(std::vector<CsvColumn> columns) {
 
 }  // namespace
 
+namespace {
+int create_file(const std::filesystem::path& file) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw Error(file.string(), std::string("cannot create the CSV file: ") + std::strerror(errno));
+  }
+  return fd;
+}
+}  // namespace
+
+void CsvSeries::write_whole(const std::string& text, const char* what) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      // Cut the part written off again: the file ends after its last complete row.
+      const bool cut = ::ftruncate(fd_, static_cast<off_t>(complete_)) == 0 &&
+                       ::lseek(fd_, static_cast<off_t>(complete_), SEEK_SET) >= 0;
+      throw Error(file_.string(),
+                  fmt::format("cannot write {}: {}{}", what, std::strerror(err),
+                              cut ? " (the file keeps its complete rows)"
+                                  : " (and the part written could not be cut off)"));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  complete_ += text.size();
+}
+
 CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns)
     : file_(std::move(file)), columns_(std::move(columns)) {
-  fp_ = std::fopen(file_.c_str(), "w");
-  if (fp_ == nullptr) {
-    throw Error(file_.string(), std::string("cannot create the CSV file: ") + std::strerror(errno));
-  }
-  const std::string header = header_row(columns_);
-  if (std::fwrite(header.data(), 1, header.size(), fp_) != header.size() || std::fflush(fp_) != 0) {
-    const int err = errno;
-    std::fclose(fp_);
-    fp_ = nullptr;
-    throw Error(file_.string(), std::string("cannot write the CSV header: ") + std::strerror(err));
-  }
+  fd_ = create_file(file_);
+  write_whole(header_row(columns_), "the CSV header");
 }
 
 CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns, double resume_time)
@@ -112,33 +138,32 @@ CsvSeries::CsvSeries(std::filesystem::path file, std::vector<CsvColumn> columns,
   }
   kept = header;  // an old file's labels are brought up to date
   // Times are printed with 9 significant digits, so a row written at the checkpoint's own
-  // time may read a little later than it: 1e-8 relative keeps it.
+  // time may read a little later than it: 1e-8 relative keeps it. A last line without its
+  // newline (a row cut short by a version that left half rows) is dropped.
   while (std::getline(in, line)) {
     if (line.empty()) continue;
+    if (in.eof()) break;  // no newline after it: not a complete row
     const double t = std::strtod(line.c_str(), nullptr);
     if (t <= resume_time * (1 + 1e-8)) kept += line + "\n";
   }
   in.close();
-  fp_ = std::fopen(file_.c_str(), "w");
-  if (fp_ == nullptr || std::fwrite(kept.data(), 1, kept.size(), fp_) != kept.size() ||
-      std::fflush(fp_) != 0) {
-    throw Error(file_.string(),
-                std::string("cannot rewrite the CSV file: ") + std::strerror(errno));
-  }
+  fd_ = create_file(file_);
+  write_whole(kept, "the CSV file's kept rows");
 }
 
 CsvSeries& CsvSeries::operator=(CsvSeries&& o) noexcept {
   if (this != &o) {
-    if (fp_ != nullptr) std::fclose(fp_);
+    if (fd_ >= 0) ::close(fd_);
     file_ = std::move(o.file_);
     columns_ = std::move(o.columns_);
-    fp_ = std::exchange(o.fp_, nullptr);
+    fd_ = std::exchange(o.fd_, -1);
+    complete_ = o.complete_;
   }
   return *this;
 }
 
 CsvSeries::~CsvSeries() {
-  if (fp_ != nullptr) std::fclose(fp_);
+  if (fd_ >= 0) ::close(fd_);
 }
 
 void CsvSeries::append(std::span<const double> values) {
@@ -147,8 +172,9 @@ void CsvSeries::append(std::span<const double> values) {
                                     " values but the file has " + std::to_string(columns_.size()) +
                                     " columns");
   }
-  // One fwrite + fflush per row: the row reaches the OS whole, so a run that dies (or a
-  // reader that tails the file) never sees a partial row.
+  // One write per row, unbuffered: the row reaches the OS whole, so a run that dies (or a
+  // reader that tails the file) never sees a partial row; one the OS takes only in part is
+  // cut off again (write_whole).
   std::string row;
   row.reserve(values.size() * 16);
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -156,9 +182,7 @@ void CsvSeries::append(std::span<const double> values) {
     append_value(row, values[i]);
   }
   row += '\n';
-  if (std::fwrite(row.data(), 1, row.size(), fp_) != row.size() || std::fflush(fp_) != 0) {
-    throw Error(file_.string(), std::string("cannot write a CSV row: ") + std::strerror(errno));
-  }
+  write_whole(row, "a CSV row");
 }
 
 }  // namespace netsph

@@ -1,7 +1,9 @@
 #pragma once
 // A time series written as CSV: a header row "name [unit],..." and one row per append().
-// Each row is flushed at once so that a run that dies keeps every row written before.
-#include <cstdio>
+// Each row is written at once, whole, so that a run that dies keeps every row written before;
+// a row that cannot be written whole (a full disk, a quota, a file size limit) is cut off
+// again, so the file never ends in half a row.
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -29,15 +31,21 @@ class CsvSeries {
   CsvSeries& operator=(CsvSeries&& o) noexcept;
 
   /// One row; values.size() must equal the column count (netsph::Error otherwise).
-  /// Integers are printed without a decimal point, others with 9 significant digits.
+  /// Integers are printed without a decimal point, others with 9 significant digits. A row
+  /// the system does not take whole is truncated away (the file keeps its complete rows) and
+  /// throws netsph::Error naming the file and the reason.
   void append(std::span<const double> values);
 
   const std::filesystem::path& path() const { return file_; }
 
  private:
+  /// Writes `text` at the end of the file, whole or not at all (truncating back on failure).
+  void write_whole(const std::string& text, const char* what);
+
   std::filesystem::path file_;
   std::vector<CsvColumn> columns_;
-  std::FILE* fp_ = nullptr;
+  int fd_ = -1;
+  std::uintmax_t complete_ = 0;  ///< bytes of the file up to its last complete row
 };
 
 }  // namespace netsph

@@ -130,6 +130,7 @@ void RunOutputs::save_state(CheckpointData& c) const {
                            static_cast<double>(last_series_step_)};
   c.text["outputs.snapshots"] = snapshots_ ? snapshots_->entries_text() : "";
   c.f64["outputs.net_times"] = net_times_;
+  c.f64["outputs.every"] = {snapshot_schedule_.every, series_schedule_.every};
   c.f64["outputs.final_extra"] = {final_row_ ? 1.0 : 0.0, final_shapes_ ? 1.0 : 0.0};
   c.f64["outputs.window"] = {window_[0], window_[1], end_time_};
   c.f64["outputs.forces"] = forces_.state();
@@ -181,6 +182,32 @@ void RunOutputs::restore_state(const Simulation& sim, const CheckpointData& c) {
     warn_missing_snapshots(dir_, entries);
     snapshots_->resume(entries);
   }
+  // A restart with a new output.snapshot_every or series_every goes on with the new interval at
+  // once (issue 46: the first snapshot after it fell at the old schedule's next time). Its due
+  // times are the new interval's multiples, as in a run given it from the start, from the first
+  // after the last output written: the last snapshot listed, the checkpoint's time for series
+  // rows (written up to it). One due at or before the restart's time is written at its first
+  // step. Checkpoints that did not record the intervals are rescheduled alike.
+  const auto saved_every = c.f64.find("outputs.every");
+  const auto changed = [&](std::size_t k, const OutputSchedule& s) {
+    return saved_every == c.f64.end() || saved_every->second.size() != 2 ||
+           saved_every->second[k] != s.every;
+  };
+  const auto after = [](const OutputSchedule& s, double last) {
+    return s.every > 0 ? (std::floor(schedule_time(last) / s.every) + 1) * s.every : s.next;
+  };
+  if (changed(0, snapshot_schedule_)) {
+    double last_snapshot = -std::numeric_limits<double>::infinity();
+    std::istringstream in(entries);
+    std::string file;
+    double t;
+    std::int64_t step;
+    std::size_t n;
+    while (in >> file >> t >> step >> n) last_snapshot = t;
+    if (std::isfinite(last_snapshot))
+      snapshot_schedule_.next = after(snapshot_schedule_, last_snapshot);
+  }
+  if (changed(1, series_schedule_)) series_schedule_.next = after(series_schedule_, sim.time());
   // The nets' shapes written so far (net_<net>_<index>.vtk): their times, or in checkpoints
   // that did not record them those of the particle snapshots they went with.
   if (const auto saved_times = c.f64.find("outputs.net_times"); saved_times != c.f64.end()) {

@@ -292,22 +292,34 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
       const bool checkpoint_due =
           stepper.time() >= next_checkpoint * (1 - 1e-12) && !run_has_ended(stepper.time(), end);
       stepper.refresh_view();
-      write_outputs([&](OutputParticles& p) {
-        outputs->after_step(*view, p);
-        if (view->diagnostics().lost_total > 0 && !warned_lost) {
-          // Where the first ones went tells a leak through a wall (just outside it) from a
-          // domain drawn too small (anywhere on its faces, moving with the flow).
-          const std::string where = describe_lost(view->diagnostics().last_lost);
-          spdlog::warn(
-              "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
-              "series.csv, lost_particles){}; enlarge [domain] if they should stay",
-              view->time(), where.empty() ? "" : ", first " + where);
-          warned_lost = true;
-        }
-        warn_sinker_reactions_at_bar(*view, warned_at_bar);
-        outputs->maybe_write(*view, p, wall());
-        if (checkpoint_due) write_checkpoint(p);
-      });
+      // An output that fails (a full disk, a quota, a file size limit) stops the run at this
+      // step: on one process the run then ends as below, with its final outputs tried, the
+      // status "output failed" in summary.json and a non-zero exit; a distributed run's
+      // processes all stop with its message (write_outputs).
+      try {
+        write_outputs([&](OutputParticles& p) {
+          outputs->after_step(*view, p);
+          if (view->diagnostics().lost_total > 0 && !warned_lost) {
+            // Where the first ones went tells a leak through a wall (just outside it) from a
+            // domain drawn too small (anywhere on its faces, moving with the flow).
+            const std::string where = describe_lost(view->diagnostics().last_lost);
+            spdlog::warn(
+                "t = {:.6g} s: particles are leaving the domain and are removed (reported in "
+                "series.csv, lost_particles){}; enlarge [domain] if they should stay",
+                view->time(), where.empty() ? "" : ", first " + where);
+            warned_lost = true;
+          }
+          warn_sinker_reactions_at_bar(*view, warned_at_bar);
+          outputs->maybe_write(*view, p, wall());
+          if (checkpoint_due) write_checkpoint(p);
+        });
+      } catch (const Error& e) {
+        if (stepper.processes() > 1) throw;
+        r.status = "output failed";
+        r.message = e.what();
+        spdlog::error("t = {:.6g} s: {}: the run stops here", stepper.time(), e.what());
+        break;
+      }
       if (checkpoint_due) {
         while (next_checkpoint <= stepper.time() * (1 + 1e-12)) next_checkpoint += checkpoint_every;
       }
@@ -335,7 +347,14 @@ RunReport run_stepped(RunStepper& stepper, const RunOptions& opt) {
       // The state of an unstable run is broken: its last good checkpoint stays.
       if (r.status != "unstable") write_checkpoint(p);
     } catch (const Error& e) {
+      // The final checkpoint or outputs are part of the run's results: a run without them has
+      // not completed (it said "completed" and exited 0 with no checkpoint), and its earlier
+      // checkpoint is where a restart goes on from.
       r.warnings.push_back(std::string("final output failed: ") + e.what());
+      if (r.status != "unstable" && r.status != "output failed") {
+        r.status = "output failed";
+        r.message = std::string("final output failed: ") + e.what();
+      }
     }
     final_state = p.measure();
   });
