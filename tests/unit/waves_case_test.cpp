@@ -8,8 +8,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "netsph/case/case_reader.hpp"
 #include "netsph/core/error.hpp"
@@ -282,6 +285,51 @@ TEST(WavesCase, FlapBodyTurnsAboutItsHingeByFlapTheory) {
   }
   EXPECT_LT(worst, 0.01 * stroke / 2);
   EXPECT_NEAR(w.max_excursion, stroke / 2, 1e-3 * stroke);
+}
+
+// type = "displacement": a record of the regular wave's paddle motion (twelve whole periods,
+// unramped, sampled 100 times a period), given the same ramp, sets the case up as the regular
+// wave does: one component of its height, frequency and phase (the record's other harmonics
+// are round-off, dropped), the same stroke, and a wall velocity table that follows the regular
+// paddle's to the tables' sampling error.
+TEST(WavesCase, DisplacementRecordOfARegularPaddleMakesThatWave) {
+  const CaseSpec regular = flume();
+  const WaveSpec& w = regular.waves;
+  const PaddleMotion m = train_paddle_motion(PaddleType::Piston, w.train);
+  const PaddleHarmonic& h = m.harmonics.front();
+  const double dt = w.period / 100;
+  std::string times, values;
+  for (int j = 0; j < 1200; ++j) {
+    const double t = j * dt;
+    times += fmt::format("{}{:.17g}", j ? ", " : "", t);
+    values +=
+        fmt::format("{}{:.17g}", j ? ", " : "", 0.5 * h.stroke * std::sin(h.omega * t - h.phase));
+  }
+  std::ifstream in(std::string(NETSPH_CASES_DIR) + "/waves/regular_piston2d.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t from = text.find("type = \"regular\""), to = text.find("[[damping]]");
+  ASSERT_NE(from, std::string::npos);
+  text = text.substr(0, from) +
+         fmt::format(
+             "type = \"displacement\"\nwavemaker = \"paddle\"\nramp = {:.17g}\n\n"
+             "[waves.displacement]\ntimes = "
+             "[{}]\nvalues = [{}]\n\n",
+             w.ramp, times, values) +
+         text.substr(to);
+  const CaseSpec spec = read_case_string(text, "displacement.toml");
+  const WaveSpec& d = spec.waves;
+  ASSERT_EQ(d.kind, WaveKind::Displacement);
+  ASSERT_EQ(d.train.components.size(), 1u);
+  const RegularWave& c = d.train.components.front();
+  EXPECT_NEAR(c.height, w.height, 1e-9 * w.height);
+  EXPECT_NEAR(c.omega, 2 * M_PI / w.period, 1e-12);
+  EXPECT_NEAR(c.phase, w.train.components.front().phase, 1e-9);
+  EXPECT_DOUBLE_EQ(d.record_height, 4 * std::sqrt(0.125 * c.height * c.height));
+  EXPECT_DOUBLE_EQ(d.record_period, 2 * M_PI / c.omega);
+  EXPECT_NEAR(d.max_excursion, w.max_excursion, 1e-6 * w.max_excursion);
+  const VelocityHistory &a = paddle_of(regular).motion, &b = paddle_of(spec).motion;
+  for (double t = 0; t < spec.simulation.end_time; t += 0.0371)
+    EXPECT_NEAR(b.at(t).x, a.at(t).x, 1e-6 * h.stroke * h.omega) << "t = " << t;
 }
 
 // A prescribed rotation about a hinge (a flap): the hinge does not move, every point keeps its

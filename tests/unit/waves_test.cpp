@@ -9,6 +9,7 @@
 #include "netsph/core/error.hpp"
 #include "netsph/waves/active_absorption.hpp"
 #include "netsph/waves/dispersion.hpp"
+#include "netsph/waves/displacement_record.hpp"
 #include "netsph/waves/irregular_waves.hpp"
 #include "netsph/waves/paddle_motion.hpp"
 #include "netsph/waves/wave_kinematics.hpp"
@@ -228,6 +229,93 @@ TEST(WaveKinematics, RampStartsAndEndsSmoothly) {
 // The discrete sea state holds Hm0 = 4 sqrt(m0) = Hs exactly: in its amplitudes, and in the
 // variance of the elevation over one repeat period 1 / df, sampled finely enough that the
 // components stay orthogonal (frequencies (i + 1/2) df: every product averages to zero).
+// A displacement record's Fourier series: harmonics of the record's length come back with
+// their strokes, frequencies and phases to round-off, and the series passes through every
+// sample (the record's trigonometric interpolation), the mean left out.
+TEST(DisplacementRecord, HarmonicsComeBackAndTheSeriesPassesThroughTheSamples) {
+  const double dt = 0.01;
+  const std::size_t n = 800;  // 8 s: the harmonics below are whole multiples of 1/8 Hz
+  DisplacementRecord r;
+  const double w1 = 2 * M_PI * 5 / (n * dt), w2 = 2 * M_PI * 13 / (n * dt);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double t = static_cast<double>(j) * dt;
+    r.times.push_back(t);
+    r.values.push_back(0.002 + 0.03 * std::sin(w1 * t - 0.4) + 0.01 * std::sin(w2 * t - 2.0));
+  }
+  ASSERT_EQ(displacement_record_problem(r), "");
+  const std::vector<PaddleHarmonic> all = record_harmonics(r, 0.0);
+  EXPECT_EQ(all.size(), n / 2);
+  const PaddleMotion motion{all, 0.0};
+  double worst = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    double x = 0, v = 0;
+    paddle_state(motion, r.times[j], x, v);
+    worst = std::max(worst, std::fabs(x - (r.values[j] - 0.002)));
+  }
+  EXPECT_LT(worst, 1e-12);
+  // The dropped ones are round-off: two harmonics stay.
+  const std::vector<PaddleHarmonic> kept = record_harmonics(r);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_NEAR(kept[0].omega, w1, 1e-12);
+  EXPECT_NEAR(kept[0].stroke, 0.06, 1e-12);
+  EXPECT_NEAR(kept[0].phase, 0.4 - 2 * M_PI * 0, 1e-9);
+  EXPECT_NEAR(kept[1].omega, w2, 1e-12);
+  EXPECT_NEAR(kept[1].stroke, 0.02, 1e-12);
+  EXPECT_NEAR(std::remainder(kept[1].phase - 2.0, 2 * M_PI), 0.0, 1e-9);
+}
+
+// Dropping the smallest harmonics keeps the motion within sqrt(allowance) of the record's
+// standard deviation (rms over the samples, by Parseval: what is dropped is orthogonal).
+TEST(DisplacementRecord, DroppedHarmonicsStayWithinTheirAllowance) {
+  const std::vector<WaveComponent> sea =
+      jonswap_components({0.05, 1.4, 3.3, 0.07, 0.09}, 0.3, 2.2, 300, 11);
+  DisplacementRecord r;
+  const std::size_t n = 2000;
+  double mean = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    r.times.push_back(0.01 * static_cast<double>(j));
+    r.values.push_back(irregular_elevation(sea, r.times.back()));
+    mean += r.values.back() / n;
+  }
+  r.values.back() = 0.5 * (r.values[n - 2] + r.values.front());  // leads on to its start
+  double variance = 0;
+  for (const double x : r.values) variance += (x - mean) * (x - mean) / n;
+  const double allowance = 1e-4;
+  const PaddleMotion motion{record_harmonics(r, allowance), 0.0};
+  EXPECT_LT(motion.harmonics.size(), n / 2);
+  double error2 = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    double x = 0, v = 0;
+    paddle_state(motion, r.times[j], x, v);
+    error2 += (x - (r.values[j] - mean)) * (x - (r.values[j] - mean)) / n;
+  }
+  EXPECT_LE(std::sqrt(error2), std::sqrt(allowance * variance) * (1 + 1e-9));
+}
+
+TEST(DisplacementRecord, RecordsThatCannotDriveAPaddleAreRefused) {
+  DisplacementRecord r;
+  for (int j = 0; j < 20; ++j) {
+    r.times.push_back(0.1 * j);
+    r.values.push_back(std::sin(2 * M_PI * j / 20.0));
+  }
+  EXPECT_EQ(displacement_record_problem(r), "");
+  DisplacementRecord uneven = r;
+  uneven.times[7] += 0.01;
+  EXPECT_NE(displacement_record_problem(uneven).find("not equally spaced"), std::string::npos);
+  DisplacementRecord jump;  // cut off at a crest: 1.0 back to the start, steps of 0.063
+  for (int j = 0; j < 125; ++j) {
+    jump.times.push_back(0.01 * j);
+    jump.values.push_back(std::sin(2 * M_PI * j / 100.0));
+  }
+  EXPECT_NE(displacement_record_problem(jump).find("must lead on to its start"), std::string::npos);
+  DisplacementRecord late = r;
+  for (double& t : late.times) t += 1;
+  EXPECT_NE(displacement_record_problem(late).find("starts at t = 1"), std::string::npos);
+  DisplacementRecord short_one = r;
+  short_one.times.resize(5), short_one.values.resize(5);
+  EXPECT_NE(displacement_record_problem(short_one).find("at least 8"), std::string::npos);
+}
+
 TEST(IrregularWaves, JonswapSeaStateHoldsItsSignificantHeight) {
   const JonswapSpec s{0.1, 1.6, 3.3};
   const double f_min = 0.2, f_max = 2.0;

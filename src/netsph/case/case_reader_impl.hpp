@@ -239,6 +239,9 @@ class CaseReader {
   /// The paddle spans the water's depth (and, in 3D, its width).
   void check_paddle_geometry(const TomlTableReader& r, const toml::node& maker) const;
   void read_wave_train(const TomlTableReader& r);
+  /// type = "displacement": the record's wave components, and its Hm0, period and length
+  /// (case_reader_displacement.cpp).
+  std::vector<WaveComponent> read_displacement_record(const TomlTableReader& r);
   /// [waves] with relaxation_zone: the zone, the current from the inlet, the water's levels
   /// (case_reader_relaxation.cpp).
   void read_relaxation_wavemaker(const TomlTableReader& r);

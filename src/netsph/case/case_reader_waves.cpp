@@ -272,8 +272,10 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
   const std::string_view kind = name_of(w.kind);
   const std::vector<std::string_view> regular_keys = {"height", "period", "theory", "generation"};
   const std::vector<std::string_view> jonswap_keys = {"hs", "tp", "gamma", "seed", "components"};
+  const std::vector<std::string_view> record_keys = {"displacement"};
   for (const auto& [owner, keys] :
-       {std::pair{WaveKind::Regular, regular_keys}, std::pair{WaveKind::Jonswap, jonswap_keys}}) {
+       {std::pair{WaveKind::Regular, regular_keys}, std::pair{WaveKind::Jonswap, jonswap_keys},
+        std::pair{WaveKind::Displacement, record_keys}}) {
     if (owner == w.kind) continue;
     for (const std::string_view key : keys) {
       if (const toml::node* node = r.find(key)) {
@@ -285,7 +287,19 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
   }
   double height = 0, period = 0;
   std::string_view height_key = "height";
-  if (w.kind == WaveKind::Regular) {
+  std::vector<WaveComponent> record;  // type = "displacement": the record's components
+  if (w.kind == WaveKind::Displacement) {
+    if (!w.has_paddle()) {
+      r.fail_value("type", *r.find("type"),
+                   fmt::format("a displacement record drives a flume's paddle, and {} has none: "
+                               "give regular or jonswap waves",
+                               w.standalone ? "a standalone net case" : "a relaxation wavemaker"));
+    }
+    height_key = "displacement";
+    record = read_displacement_record(r);
+    height = w.record_height;
+    period = w.record_period;
+  } else if (w.kind == WaveKind::Regular) {
     w.height = height = r.required_number("height", NumberRule::positive("m"),
                                           "the wave height H, crest to trough, m");
     w.period = period =
@@ -320,7 +334,10 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
         std::clamp(std::ceil(1.1 * spec_.simulation.end_time * span), 100.0, 5000.0));
     w.components = static_cast<int>(r.integer("components", IntRule{10, 20000}, fallback));
   }
-  w.ramp = r.number("ramp", NumberRule::non_negative("s"), 2 * period);
+  // A record carries its own start (no ramp unless asked); a theory's waves start over two
+  // periods.
+  w.ramp = r.number("ramp", NumberRule::non_negative("s"),
+                    w.kind == WaveKind::Displacement ? 0.0 : 2 * period);
   // The breaking limit (Miche 1944) at the wave's (or the sea's peak) wavelength, on the
   // current it rides (standalone waves; a flume's water is still).
   double k = 0;
@@ -338,10 +355,15 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
         fmt::format("makes a wave steeper than the breaking limit: H / L = {:.4g} with "
                     "L = {:.4g} m (T = {} s, depth {} m{}), and a wave breaks above H / "
                     "L = 0.142 tanh(kh) = {:.4g} (Miche 1944); the highest that does "
-                    "not break is {:.4g} m",
+                    "not break is {:.4g} m{}",
                     height / wavelength, wavelength, format_number(period), format_number(w.depth),
                     w.current == 0 ? std::string() : fmt::format(", on {}", wave_current_source()),
-                    limit, limit * wavelength));
+                    limit, limit * wavelength,
+                    w.kind == WaveKind::Displacement
+                        ? fmt::format(" (H is the record's waves' Hm0, T the period of its tallest "
+                                      "component: scale the record by {:.3g} or less)",
+                                      limit * wavelength / height)
+                        : std::string()));
   }
   // Stokes' expansion holds while its second-order surface stays small beside the first
   // order. In shallow water the ratio is 3 H L^2 / (32 pi^2 h^3) = Ur / 105 (Ur = H L^2 / h^3,
@@ -362,7 +384,9 @@ void CaseReader::read_wave_train(const TomlTableReader& r) {
     }
   }
   try {
-    if (w.kind == WaveKind::Regular) {
+    if (w.kind == WaveKind::Displacement) {
+      w.train = irregular_wave_train(record, w.depth, w.ramp, g);
+    } else if (w.kind == WaveKind::Regular) {
       w.train = regular_wave_train(w.height, w.period, w.depth,
                                    w.theory == WaveTheory::Stokes2 ? 2 : 1, w.ramp, g, w.current);
     } else {

@@ -71,7 +71,7 @@ const std::vector<TableKeys>& schema() {
       {"waves",
        {"type", "paddle", "wavemaker", "height", "period", "theory", "generation", "hs", "tp",
         "gamma", "seed", "components", "ramp", "depth", "still_water_level", "origin_x",
-        "relaxation_zone", "relaxation_rate", "absorption"}},
+        "relaxation_zone", "relaxation_rate", "absorption", "displacement"}},
       {"damping", {"name", "from", "to", "rate", "velocity"}},
       {"gauge", {"name", "x", "y"}},
       {"current", {"velocity", "model", "screen", "normal_drag", "tangential_drag"}},

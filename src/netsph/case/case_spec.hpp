@@ -282,9 +282,11 @@ struct ProbeSpec {
 /// x: on its xmin face the waves travel in +x, on its xmax face in -x. In a standalone net case
 /// (no fluid) there is no paddle: the waves travel in +x from `origin_x` over water of the
 /// given depth, on the [current]'s x velocity, and load the nets with their orbital velocity.
-enum class WaveKind : std::uint8_t { Regular, Jonswap };
-inline constexpr std::array kWaveKindNames = {EnumName<WaveKind>{"regular", WaveKind::Regular},
-                                              EnumName<WaveKind>{"jonswap", WaveKind::Jonswap}};
+enum class WaveKind : std::uint8_t { Regular, Jonswap, Displacement };
+inline constexpr std::array kWaveKindNames = {
+    EnumName<WaveKind>{"regular", WaveKind::Regular},
+    EnumName<WaveKind>{"jonswap", WaveKind::Jonswap},
+    EnumName<WaveKind>{"displacement", WaveKind::Displacement}};
 static_assert(one_to_one(kWaveKindNames));
 constexpr std::string_view name_of(WaveKind v) {
   return name_of(kWaveKindNames, v);
@@ -333,9 +335,13 @@ struct WaveSpec {
   JonswapSpec jonswap;     ///< jonswap: hs, tp, gamma
   std::uint64_t seed = 1;  ///< jonswap: the random phases' seed
   int components = 0;      ///< jonswap: how many frequencies
-  double depth = 0;        ///< still-water depth h, m (default: still level - lowest fill)
-  double still_level = 0;  ///< z of the still-water level, m (default: the highest fill top)
-  double ramp = 0;         ///< s (default: two periods)
+  /// displacement: the record's Hm0 = 4 sqrt(m0) and the period of its tallest component, of
+  /// the waves its harmonics make (waves/displacement_record.hpp), m and s
+  double record_height = 0, record_period = 0;
+  double record_length = 0;  ///< displacement: N dt, s (the paddle repeats the record after it)
+  double depth = 0;          ///< still-water depth h, m (default: still level - lowest fill)
+  double still_level = 0;    ///< z of the still-water level, m (default: the highest fill top)
+  double ramp = 0;           ///< s (default: two periods)
   /// x of the paddle's face at rest (standalone: origin_x; relaxation: relaxation_end), m
   double paddle_x = 0;
   bool standalone = false;  ///< a standalone net case's waves: no paddle
@@ -358,9 +364,24 @@ struct WaveSpec {
   /// The paddle is a piston, a [[wall]] that translates (a flap is a [[body]] that rotates).
   bool paddle_is_wall() const { return has_paddle() && paddle == PaddleType::Piston; }
   /// The period that sets the time scales (ramp, gauge sampling): T or Tp, s.
-  double reference_period() const { return kind == WaveKind::Regular ? period : jonswap.tp; }
+  double reference_period() const {
+    return kind == WaveKind::Regular   ? period
+           : kind == WaveKind::Jonswap ? jonswap.tp
+                                       : record_period;
+  }
   /// The height that sets the crests and the resolution: H or Hs, m.
-  double reference_height() const { return kind == WaveKind::Regular ? height : jonswap.hs; }
+  double reference_height() const {
+    return kind == WaveKind::Regular   ? height
+           : kind == WaveKind::Jonswap ? jonswap.hs
+                                       : record_height;
+  }
+  /// The keys that set reference_period() and reference_height(), for messages.
+  std::string_view period_key() const {
+    return kind == WaveKind::Regular ? "period" : kind == WaveKind::Jonswap ? "tp" : "displacement";
+  }
+  std::string_view height_key() const {
+    return kind == WaveKind::Regular ? "height" : kind == WaveKind::Jonswap ? "hs" : "displacement";
+  }
   /// The wavelength of the tallest component, m.
   double reference_wavelength() const;
   /// The target elevation above the still-water level at x (m), time t (s): train_elevation

@@ -48,8 +48,8 @@ bool on_fixed_edge(const NetSpec& spec, int row, int column, int rows, int colum
          (spec.fixed_edges[3] && column == columns - 1);
 }
 
-/// The volume the fluid's pressure acts on: the knot as SPH particles at spacing dp resolve
-/// it (every dimension at least 2 dp), its own volume when dp is 0.
+}  // namespace
+
 double resolved_knot_volume(const KnotGeometry& g, double dp) {
   if (dp <= 0) return g.volume;
   Shape s;
@@ -66,8 +66,6 @@ double resolved_knot_volume(const KnotGeometry& g, double dp) {
   }
   return resolvable_shape(s, dp, 3).measure(3);
 }
-
-}  // namespace
 
 NetEnvironment net_environment(const CaseSpec& spec) {
   NetEnvironment env;

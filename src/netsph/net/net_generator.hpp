@@ -31,6 +31,13 @@ struct NetEnvironment {
   double resolved_dp = 0;
 };
 
+/// The volume of a knot resolved by SPH particles at spacing dp, as the net generator counts
+/// its buoyancy (resolvable_shape: every dimension at least 2 dp); its own volume when dp is 0.
+/// The fluid's pressure acts on the lattice cells of the knot's particles instead, which the
+/// coupling corrects for once the particles exist (solver/net_coupling.hpp,
+/// buoy_resolved_knots_by_their_particles).
+double resolved_knot_volume(const KnotGeometry& g, double dp);
+
 /// The environment of a case's nets: a standalone net (no fluid) hangs under fluid.gravity
 /// with its buoyancy added; knots resolved in a fluid with gravity get their buoyancy from the
 /// fluid's pressure; in a fluid without gravity, fluid.structure_gravity (if given) gives

@@ -42,6 +42,8 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
   if (!w.given) return;
   const double dp = spec.simulation.dp;
   const bool regular = w.kind == WaveKind::Regular;
+  const std::string_view period_key = w.period_key(), height_key = w.height_key();
+  const bool record = w.kind == WaveKind::Displacement;
   const double height = w.reference_height();
   const double period = w.reference_period();
   // The first step: the fluid at rest under gravity (force limit) or the acoustic limit.
@@ -54,21 +56,28 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
   double shortest = period;
   for (const RegularWave& c : w.train.components) shortest = std::min(shortest, 2 * M_PI / c.omega);
   if (shortest / dt < kMinStepsPerPeriod) {
-    throw Error(w.where.str(),
-                fmt::format("waves.{} = {:g} s gives {:.3g} time steps per {}period at the first "
-                            "time step, {:.3g} s; the paddle and the waves need at least {:.0f}: "
-                            "lower simulation.dt_max or simulation.cfl, or lengthen the period",
-                            regular ? "period" : "tp", period, shortest / dt,
-                            regular ? "" : "shortest component's ", dt, kMinStepsPerPeriod));
+    throw Error(
+        w.where.str(),
+        fmt::format("waves.{} {} {:g} s gives {:.3g} time steps per {}period at the first "
+                    "time step, {:.3g} s; the paddle and the waves need at least {:.0f}: "
+                    "lower simulation.dt_max or simulation.cfl, or lengthen the period",
+                    period_key, record ? "(its tallest component's period)" : "=", period,
+                    shortest / dt, regular ? "" : "shortest component's ", dt, kMinStepsPerPeriod));
   }
   const double per_height = height / dp;
   if (per_height < kMinParticlesPerHeight) {
     scene.warnings.push_back(fmt::format(
-        "[waves] ({}): waves.{} = {:g} m, the wave height, is {:.3g} particle spacings (dp = "
+        "[waves] ({}): waves.{} {} {:g} m, the wave height, is {:.3g} particle spacings (dp = "
         "{:g} m); below {:.0f} the kernel (2h = {:.3g} dp) smooths the surface over the whole "
         "wave and damps it: use dp <= {:.3g} m",
-        w.where.str(), regular ? "height" : "hs", height, per_height, dp, kMinParticlesPerHeight,
-        2 * spec.simulation.h_over_dp, height / kMinParticlesPerHeight));
+        w.where.str(), height_key, record ? "(its waves' Hm0)" : "=", height, per_height, dp,
+        kMinParticlesPerHeight, 2 * spec.simulation.h_over_dp, height / kMinParticlesPerHeight));
+  }
+  if (record && spec.simulation.end_time > w.record_length * (1 + 1e-9)) {
+    scene.warnings.push_back(fmt::format(
+        "[waves] ({}): the displacement record is {:g} s long and the run {:g} s: the paddle "
+        "repeats the record every {:g} s",
+        w.where.str(), w.record_length, spec.simulation.end_time, w.record_length));
   }
   if (w.ramp >= spec.simulation.end_time) {
     scene.warnings.push_back(fmt::format(

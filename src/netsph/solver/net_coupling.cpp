@@ -85,6 +85,25 @@ std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded) {
   return nets;
 }
 
+void buoy_resolved_knots_by_their_particles(std::vector<CoupledNet>& nets,
+                                            const std::vector<RigidBody>& bodies,
+                                            const CaseSpec& expanded) {
+  const NetEnvironment env = net_environment(expanded);
+  if (env.knot_buoyancy) return;  // the constant force carries the whole buoyancy
+  const double dp = expanded.simulation.dp;
+  const double cell = dp * dp * dp;  // nets are 3D
+  for (CoupledNet& c : nets) {
+    for (std::size_t k = 0; k < c.model.knots.size(); ++k) {
+      NetKnot& knot = c.model.knots[k];
+      const double lattice = static_cast<double>(bodies.at(c.first_body + k).count) * cell;
+      const double assumed = resolved_knot_volume(knot.geometry, env.resolved_dp);
+      // The generator added rho g V_assumed (down) against the water's rho g V_assumed (up);
+      // the water gives rho g V_lattice.
+      knot.constant_force += env.gravity * (env.water_density * (lattice - assumed));
+    }
+  }
+}
+
 namespace {
 
 /// One knot's share of a sinker bar at the stage being sampled.

@@ -82,6 +82,18 @@ CaseSpec spec_with_net_knots(const CaseSpec& spec);
 /// The nets of a case expanded by spec_with_net_knots, with their knot-body indices.
 std::vector<CoupledNet> coupled_nets(const CaseSpec& expanded);
 
+/// Resolved knots in a fluid with gravity: the fluid's pressure buoys each knot body by the
+/// water of about the lattice cells its particles stand for, rho_w g N dp^3 (measured on the
+/// Bi 2014 net in still water at dp 20 mm, cases/waves/net_bi2014_waves3d.toml: 12-14 N up
+/// on 9 knots of 18 particles, against 12.7 N from N dp^3 and the 5 N of the knots'
+/// resolvable shapes), not by the shapes' volume the generator assumed
+/// (net/net_generator.hpp, resolved_knot_volume). Corrects each knot's constant force
+/// by the difference, from the bodies' particle counts, so that water and constant force
+/// together give the netting's buoyancy. Nothing to do without gravity in the fluid.
+void buoy_resolved_knots_by_their_particles(std::vector<CoupledNet>& nets,
+                                            const std::vector<RigidBody>& bodies,
+                                            const CaseSpec& expanded);
+
 /// Samples the fluid along every net's sinker bar, where the knot bodies' present states put it,
 /// into CoupledNet::sinker_flow and sinker_wet, and downstream of it for sinker_reach. A
 /// stage calls it before the bodies move.

@@ -37,6 +37,7 @@ Simulation::Simulation(const CaseSpec& spec, StepBackend backend,
   shift_params_ = shifting_params(spec, m);
   contact_model_ = ContactModel::make(spec.simulation.dp, scene_.sound_speed);
   initial_fluid_ = p_.count(ParticleKind::Fluid);
+  buoy_resolved_knots_by_their_particles(nets_, scene_.bodies, spec_);
   // Knots carry their weight and buoyancy in the knot-spring solver (constant forces), not as
   // body forces.
   for (const CoupledNet& net : nets_) {
