@@ -57,6 +57,12 @@ std::vector<WaveComponent> CaseReader::read_displacement_record(const TomlTableR
     if (amplitude > tallest) tallest = amplitude, w.record_period = 2 * M_PI / h.omega;
   }
   w.record_height = 4 * std::sqrt(variance);
+  if (w.record_period > spec_.simulation.end_time) {
+    r.fail_value("displacement", node,
+                 fmt::format("makes waves whose tallest has a period of {:.4g} s, longer than the "
+                             "run (simulation.end_time = {} s): not one wave would be made",
+                             w.record_period, format_number(spec_.simulation.end_time)));
+  }
   w.record_length = record.times[1] * static_cast<double>(record.times.size());
   return components;
 }

@@ -107,6 +107,34 @@ void CaseReader::set_flap_motion(const TomlTableReader& r, const SampledPaddle& 
                              "wavemaker theory; lower the wave height",
                              angle * 180 / M_PI, w.max_excursion, w.depth));
   }
+  // The tank's bottom runs under the flap (under its whole thickness, at the bed), and the
+  // back corner, which dips by thickness sin(angle) as the flap turns back about the front
+  // foot, stays within the bottom's particle layers.
+  const double dp = spec_.simulation.dp;
+  const double back_x = w.paddle_x - w.direction * body.lengths.x;
+  const double lo = std::min(back_x, w.paddle_x), hi = std::max(back_x, w.paddle_x);
+  const WallSpec* bottom = nullptr;
+  for (const WallSpec& wall : spec_.walls) {
+    if (!wall.faces[kZMin] || std::fabs(wall.box.min.z - bed) > 0.5 * dp) continue;
+    if (wall.box.min.x <= lo + 0.5 * dp && wall.box.max.x >= hi - 0.5 * dp) bottom = &wall;
+  }
+  if (!bottom) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("no wall's bottom (a zmin face at the bed, z = {}) runs under the "
+                             "flap (x from {:.4g} to {:.4g} m): the water would leak under its "
+                             "hinge; extend the tank's bottom under and behind the flap",
+                             format_number(bed), lo, hi));
+  }
+  const double dip = body.lengths.x * std::sin(angle);
+  if (dip > bottom->layers * dp) {
+    r.fail_value("wavemaker", maker,
+                 fmt::format("the flap is {:.4g} m thick, so its back corner dips {:.4g} m below "
+                             "the bed as it turns {:.3g} degrees back, through the {:.4g} m of the "
+                             "bottom's particle layers (wall '{}'): make the flap at most {:.4g} m "
+                             "thick",
+                             body.lengths.x, dip, angle * 180 / M_PI, bottom->layers * dp,
+                             bottom->name, bottom->layers * dp / std::sin(angle)));
+  }
   const double top = body.center.z + 0.5 * body.lengths.z;
   const double back = w.paddle_x - w.direction * body.lengths.x;
   const double reach = (top - bed) * std::sin(angle) + body.lengths.x;

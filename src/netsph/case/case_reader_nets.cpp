@@ -54,6 +54,18 @@ void CaseReader::read_nets() {
                               "be unique",
                               net.name, other.where.str(), number));
     }
+    // A net's knots become bodies of its name's force group: a wall, boundary or body of the
+    // same name would share its outputs.
+    for (const NamedEntry& other : names_) {
+      if (other.name != net.name) continue;
+      const toml::node* name_node = tables[i]->get("name");
+      throw Error(source_.where(name_node ? name_node->source() : tables[i]->source()),
+                  fmt::format("net name \"{}\" is used by {} ({}) too; names must be unique "
+                              "among walls, inlets, outlets, bodies and nets (each names its "
+                              "outputs)",
+                              net.name, other.label, other.where.str()));
+    }
+    names_.push_back({net.name, fmt::format("net[{}]", number), net.where});
     spec_.nets.push_back(std::move(net));
   }
 }

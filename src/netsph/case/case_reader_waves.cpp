@@ -216,7 +216,7 @@ void CaseReader::read_wave_levels(const TomlTableReader& r, const toml::node& ma
     if (!behind) continue;
     r.fail_value(
         "wavemaker", maker,
-        fmt::format("the fill at {} holds water behind the paddle (x {} {} m): a piston "
+        fmt::format("the fill at {} holds water behind the paddle (x {} {} m): a paddle "
                     "has water on one side only; end the fill at the paddle's face",
                     f.where.str(), w.direction > 0 ? "<" : ">", format_number(w.paddle_x)));
   }
@@ -257,6 +257,16 @@ void CaseReader::check_paddle_geometry(const TomlTableReader& r, const toml::nod
   }
   if (is_2d()) return;
   for (const FillSpec& f : spec_.fills) {
+    // A flap wider than the water would turn through the side walls' particles.
+    if (w.paddle == PaddleType::Flap &&
+        (box.min.y < f.box.min.y - 0.5 * dp || box.max.y > f.box.max.y + 0.5 * dp)) {
+      r.fail_value("wavemaker", maker,
+                   fmt::format("{} spans y from {:.4g} to {:.4g} m, wider than the water of the "
+                               "fill at {} (y from {} to {} m): it would turn through the side "
+                               "walls; make it as wide as the water",
+                               what, box.min.y, box.max.y, f.where.str(),
+                               format_number(f.box.min.y), format_number(f.box.max.y)));
+    }
     if (box.min.y <= f.box.min.y + 0.5 * dp && box.max.y >= f.box.max.y - 0.5 * dp) continue;
     r.fail_value("wavemaker", maker,
                  fmt::format("{} spans y from {:.4g} to {:.4g} m, narrower than the water of the "

@@ -162,17 +162,20 @@ void append_body_rows(const Simulation& sim, CsvSeries& csv) {
   const auto& bodies = sim.bodies();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const RigidBody& r = bodies[b];
-    const double row[] = {sim.time(),        static_cast<double>(b),
-                          r.state.com.x,     r.state.com.y,
-                          r.state.com.z,     r.state.vel.x,
-                          r.state.vel.y,     r.state.vel.z,
-                          r.state.q.w,       r.state.q.x,
-                          r.state.q.y,       r.state.q.z,
-                          r.fluid_force.x,   r.fluid_force.y,
-                          r.fluid_force.z,   r.fluid_torque.x,
-                          r.fluid_torque.y,  r.fluid_torque.z,
-                          r.contact_force.x, r.contact_force.y,
-                          r.contact_force.z};
+    // Contact moves only a floating body; a fixed or prescribed one (a flap against the bed it
+    // turns on) touches walls by design, and the contact model's push there means nothing.
+    const Vec3d contact = r.motion == BodyMotion::Floating ? r.contact_force : Vec3d{};
+    const double row[] = {sim.time(),       static_cast<double>(b),
+                          r.state.com.x,    r.state.com.y,
+                          r.state.com.z,    r.state.vel.x,
+                          r.state.vel.y,    r.state.vel.z,
+                          r.state.q.w,      r.state.q.x,
+                          r.state.q.y,      r.state.q.z,
+                          r.fluid_force.x,  r.fluid_force.y,
+                          r.fluid_force.z,  r.fluid_torque.x,
+                          r.fluid_torque.y, r.fluid_torque.z,
+                          contact.x,        contact.y,
+                          contact.z};
     csv.append(row);
   }
 }

@@ -56,13 +56,14 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
   double shortest = period;
   for (const RegularWave& c : w.train.components) shortest = std::min(shortest, 2 * M_PI / c.omega);
   if (shortest / dt < kMinStepsPerPeriod) {
-    throw Error(
-        w.where.str(),
-        fmt::format("waves.{} {} {:g} s gives {:.3g} time steps per {}period at the first "
-                    "time step, {:.3g} s; the paddle and the waves need at least {:.0f}: "
-                    "lower simulation.dt_max or simulation.cfl, or lengthen the period",
-                    period_key, record ? "(its tallest component's period)" : "=", period,
-                    shortest / dt, regular ? "" : "shortest component's ", dt, kMinStepsPerPeriod));
+    throw Error(w.where.str(),
+                fmt::format("waves.{}{} gives {:.3g} time steps per {}period{} at the first time "
+                            "step, {:.3g} s; the paddle and the waves need at least {:.0f}: lower "
+                            "simulation.dt_max or simulation.cfl, or lengthen the period",
+                            period_key, record ? std::string() : fmt::format(" = {:g} s", period),
+                            shortest / dt, regular ? "" : "shortest component's ",
+                            regular ? std::string() : fmt::format(" ({:.3g} s)", shortest), dt,
+                            kMinStepsPerPeriod));
   }
   const double per_height = height / dp;
   if (per_height < kMinParticlesPerHeight) {
@@ -72,6 +73,13 @@ void check_waves(const CaseSpec& spec, Scene& scene) {
         "wave and damps it: use dp <= {:.3g} m",
         w.where.str(), height_key, record ? "(its waves' Hm0)" : "=", height, per_height, dp,
         kMinParticlesPerHeight, 2 * spec.simulation.h_over_dp, height / kMinParticlesPerHeight));
+  }
+  if (w.paddle == PaddleType::Flap && w.theory == WaveTheory::Stokes2 && w.has_paddle()) {
+    scene.warnings.push_back(fmt::format(
+        "[waves] ({}): a flap moves by first-order theory only: the Stokes second-order wave "
+        "asked for comes with the free second harmonic first-order generation makes "
+        "(second-order generation is built for a piston)",
+        w.where.str()));
   }
   if (record && spec.simulation.end_time > w.record_length * (1 + 1e-9)) {
     scene.warnings.push_back(fmt::format(

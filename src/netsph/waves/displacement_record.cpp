@@ -42,13 +42,18 @@ std::string displacement_record_problem(const DisplacementRecord& r) {
     low = std::min(low, r.values[i]);
     high = std::max(high, r.values[i]);
   }
-  if (!(high > low)) return "never moves: every value is the same";
+  // A micrometre is far below anything a particle spacing resolves; below it the record's
+  // waves are round-off (and their frequencies, scaled by their heights, overflow).
+  if (!(high - low > 1e-6)) {
+    return fmt::format("never moves: its values span {:.3g} m, under a micrometre", high - low);
+  }
   // The paddle repeats the record: from its last sample it goes on, a sample interval later, to
   // its first. That step must be no larger than the record's own steps (three times the
   // largest, for a signal sampled a few times per period): a jump puts energy at every frequency
   // up to the sampling's limit.
+  // The step into the last sample is left out: a glitch there would excuse itself.
   double largest_step = 0;
-  for (std::size_t i = 1; i < n; ++i)
+  for (std::size_t i = 1; i + 1 < n; ++i)
     largest_step = std::max(largest_step, std::fabs(r.values[i] - r.values[i - 1]));
   const double closing = std::fabs(r.values[0] - r.values[n - 1]);
   if (closing > 3 * largest_step) {
