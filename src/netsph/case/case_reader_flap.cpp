@@ -3,6 +3,7 @@
 // solver/body_motion.cpp). A piston is a [[wall]] that translates (case_reader_waves.cpp);
 // the two share the wave, the water's levels and the tank's checks. Same conventions as
 // case_reader.cpp; docs/case-reference.md documents the keys.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
