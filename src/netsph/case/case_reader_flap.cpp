@@ -137,7 +137,6 @@ void CaseReader::set_flap_motion(const TomlTableReader& r, const SampledPaddle& 
                              bottom->name, bottom->layers * dp / std::sin(angle)));
   }
   const double top = body.center.z + 0.5 * body.lengths.z;
-  const double back = w.paddle_x - w.direction * body.lengths.x;
   const double reach = (top - bed) * std::sin(angle) + body.lengths.x;
   const DomainSpec& d = spec_.domain;
   const double far = w.paddle_x - w.direction * reach;
@@ -146,7 +145,7 @@ void CaseReader::set_flap_motion(const TomlTableReader& r, const SampledPaddle& 
                  fmt::format("the flap's top swings {:.4g} m either side of upright, so its back "
                              "(at rest x = {:.4g} m) reaches x = {:.4g} m, outside [domain] (x "
                              "from {} to {} m): widen the domain behind the flap",
-                             (top - bed) * std::sin(angle), back, far, format_number(d.min.x),
+                             (top - bed) * std::sin(angle), back_x, far, format_number(d.min.x),
                              format_number(d.max.x)));
   }
   double water = 0;

@@ -7,6 +7,7 @@
 // largest excursion), repeating the record when the run is longer, and each harmonic, through
 // the paddle's transfer function, is a linear wave component whose sum is the target the
 // gauges are compared with (wave_train.hpp). Host functions: set-up work.
+#include <string>
 #include <vector>
 
 #include "netsph/waves/irregular_waves.hpp"
